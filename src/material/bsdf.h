@@ -1,0 +1,61 @@
+#pragma once
+// BSDFs evaluated at a surface point. Directions are world-space unit vectors pointing away from
+// the surface: wo towards where light goes (the previous vertex on a camera path), wi towards where
+// it comes from. Values exclude the cosine factor.
+#include <optional>
+
+#include "core/math.h"
+#include "material/material.h"
+
+namespace relt {
+
+// Radiance: camera subpaths (adjoint BSDF not needed). Importance: light subpaths; refraction
+// then omits the 1/eta^2 radiance scaling (Veach 1997, 5.2), which makes dielectrics non-symmetric.
+enum class TransportMode : uint8_t { Radiance, Importance };
+
+// The lobe parameters actually used by a BSDF instance. Tempering (a later feature) replaces them:
+// it multiplies alpha and treats smooth surfaces as Beckmann with a small alpha.
+struct Roughness {
+  float alpha = 0.0f;  // 0 = smooth (delta)
+  Microfacet distribution = Microfacet::GGX;
+};
+
+struct BsdfSample {
+  Vec3 wi;          // sampled direction (world)
+  // BSDF value and solid-angle density, so that f |cos wi| / pdf is the throughput weight. For a
+  // delta lobe, f is the delta's coefficient divided by |cos wi| and pdf is the discrete
+  // probability of choosing that lobe (1 for a mirror; Fresnel R or T for smooth glass).
+  Color f;
+  float pdf = 0.0f;
+  bool delta = false;
+};
+
+class Bsdf {
+ public:
+  // shadingN: interpolated shading normal; geometricN: true triangle normal. Both unit length,
+  // any orientation (the BSDF works out which side it is on).
+  Bsdf(const Material& material, const Vec3& shadingN, const Vec3& geometricN);
+  Bsdf(const Material& material, const Vec3& shadingN, const Vec3& geometricN, Roughness override);
+
+  // True when every lobe is a Dirac delta (smooth mirror or glass): eval and pdf return zero.
+  bool isDelta() const;
+  Color eval(const Vec3& wo, const Vec3& wi, TransportMode mode) const;
+  // Density of sampling wi given wo. The reverse density is pdf(wi, wo) (with the mode swapped
+  // where relevant: the density itself does not depend on the mode).
+  float pdf(const Vec3& wo, const Vec3& wi) const;
+  // u: two numbers for the direction, uLobe: one for the lobe choice (reflect/refract).
+  std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float uLobe, TransportMode mode) const;
+
+  const Material& material() const { return *material_; }
+  const Roughness& roughness() const { return rough_; }
+  const Frame& frame() const { return frame_; }
+  const Vec3& geometricNormal() const { return ng_; }
+
+ private:
+  const Material* material_;
+  Frame frame_;
+  Vec3 ng_;
+  Roughness rough_;
+};
+
+}  // namespace relt
