@@ -1,0 +1,70 @@
+#include "comm.h"
+
+#include <chrono>
+
+namespace relt::mpi {
+namespace {
+double g_collectiveSeconds = 0.0;
+
+// Times one collective call, including the wait for the slowest rank.
+template <class F>
+void timed(F&& f) {
+  const auto t0 = std::chrono::steady_clock::now();
+  f();
+  g_collectiveSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
+
+Session::Session(int* argc, char*** argv) {
+  MPI_Init(argc, argv);
+  // A failed rank must end the job with an error, never hang it.
+  MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_ARE_FATAL);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+Session::~Session() { MPI_Finalize(); }
+
+void reduceSumToRoot(std::vector<double>& data, int root) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  // MPI counts are int: reduce in chunks so large films (per-level layers) stay within range.
+  const size_t chunk = size_t(1) << 28;
+  timed([&] {
+    for (size_t off = 0; off < data.size(); off += chunk) {
+      const int n = static_cast<int>(std::min(chunk, data.size() - off));
+      if (rank == root)
+        MPI_Reduce(MPI_IN_PLACE, data.data() + off, n, MPI_DOUBLE, MPI_SUM, root, MPI_COMM_WORLD);
+      else
+        MPI_Reduce(data.data() + off, nullptr, n, MPI_DOUBLE, MPI_SUM, root, MPI_COMM_WORLD);
+    }
+  });
+}
+
+double allreduceMax(double value) {
+  double out = value;
+  timed([&] { MPI_Allreduce(&value, &out, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD); });
+  return out;
+}
+
+double allreduceSum(double value) {
+  double out = value;
+  timed([&] { MPI_Allreduce(&value, &out, 1, MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD); });
+  return out;
+}
+
+uint64_t allreduceSum(uint64_t value) {
+  uint64_t out = value;
+  timed([&] { MPI_Allreduce(&value, &out, 1, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD); });
+  return out;
+}
+
+int allreduceMax(int value) {
+  int out = value;
+  timed([&] { MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD); });
+  return out;
+}
+
+double collectiveSeconds() { return g_collectiveSeconds; }
+
+}  // namespace relt::mpi

@@ -1,0 +1,33 @@
+#pragma once
+// RAII MPI session and the few typed collectives relt needs. Only this layer includes mpi.h.
+#include <mpi.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace relt::mpi {
+
+class Session {
+ public:
+  Session(int* argc, char*** argv);
+  ~Session();
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  bool isRoot() const { return rank_ == 0; }
+
+ private:
+  int rank_ = 0, size_ = 1;
+};
+
+// Sum of a double buffer onto the root (in place on the root).
+void reduceSumToRoot(std::vector<double>& data, int root = 0);
+double allreduceMax(double value);
+double allreduceSum(double value);
+uint64_t allreduceSum(uint64_t value);
+int allreduceMax(int value);
+// Wall-clock seconds spent inside collectives by this rank, accumulated by the functions above.
+double collectiveSeconds();
+
+}  // namespace relt::mpi

@@ -1,0 +1,2 @@
+// Placeholder entry point while the driver is written.
+int main() { return 0; }
