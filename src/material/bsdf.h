@@ -48,6 +48,7 @@ class Bsdf {
 
   const Material& material() const { return *material_; }
   const Roughness& roughness() const { return rough_; }
+  // Shading frame; its normal is the shading normal turned to the side ng points to (the outside).
   const Frame& frame() const { return frame_; }
   const Vec3& geometricNormal() const { return ng_; }
 
@@ -56,6 +57,7 @@ class Bsdf {
   Frame frame_;
   Vec3 ng_;
   Roughness rough_;
+  float alpha_ = 0.0f;  // alpha used by the lobes: 0 (delta) or rough_.alpha clamped to >= 1e-4
 };
 
 }  // namespace relt

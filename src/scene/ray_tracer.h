@@ -1,0 +1,66 @@
+#pragma once
+// Embree 3 wrapper: closest-hit and occlusion queries over the scene's triangles, plus the
+// per-triangle data (geometric normal, area) that shading and light sampling need.
+#include <vector>
+
+#include "core/math.h"
+#include "scene/scene.h"
+
+// Embree handles are opaque pointers; keep embree headers out of the rest of the renderer.
+typedef struct RTCDeviceTy* RTCDevice;
+typedef struct RTCSceneTy* RTCScene;
+
+namespace relt {
+
+struct Ray {
+  Vec3 origin;
+  Vec3 dir;     // unit length
+  float tMax = INFINITY;
+};
+
+// A surface point reached by a ray or sampled on a light.
+struct SurfacePoint {
+  Vec3 p;
+  Vec3 ng;           // unit geometric normal (triangle winding: front side)
+  Vec3 ns;           // unit shading normal (== ng where the file gave no normals)
+  uint32_t triangle = 0;
+  uint32_t material = 0;
+};
+
+class RayTracer {
+ public:
+  explicit RayTracer(const Scene& scene);
+  ~RayTracer();
+  RayTracer(const RayTracer&) = delete;
+  RayTracer& operator=(const RayTracer&) = delete;
+
+  // Closest hit along the ray; false if it escapes. Counts rays for statistics.
+  bool intersect(const Ray& ray, SurfacePoint& hit, float& distance) const;
+  // True if anything blocks the open segment between two surface points (each offset off its surface).
+  bool occluded(const Vec3& from, const Vec3& fromNg, const Vec3& to, const Vec3& toNg) const;
+  // Same with a punctual point (no surface at the far end).
+  bool occludedToPoint(const Vec3& from, const Vec3& fromNg, const Vec3& point) const;
+
+  // Ray origin nudged off the surface to the side the direction goes to.
+  Vec3 offsetOrigin(const Vec3& p, const Vec3& ng, const Vec3& dir) const;
+  Ray spawn(const SurfacePoint& sp, const Vec3& dir) const { return Ray{offsetOrigin(sp.p, sp.ng, dir), dir, INFINITY}; }
+
+  const Scene& scene() const { return scene_; }
+  float triangleArea(uint32_t t) const { return area_[t]; }
+  const Vec3& triangleNormal(uint32_t t) const { return ng_[t]; }
+  // Surface point at barycentrics (b1, b2) of triangle t.
+  SurfacePoint surfacePoint(uint32_t t, float b1, float b2) const;
+
+  uint64_t rayCount() const { return rays_; }
+
+ private:
+  const Scene& scene_;
+  RTCDevice device_ = nullptr;
+  RTCScene rtcScene_ = nullptr;
+  std::vector<Vec3> ng_;
+  std::vector<float> area_;
+  float epsilonScale_ = 1.0f;
+  mutable uint64_t rays_ = 0;
+};
+
+}  // namespace relt
