@@ -1,0 +1,34 @@
+#pragma once
+// Accumulation buffer for splats (double precision, box filter of one pixel).
+#include <cstdint>
+#include <vector>
+
+#include "core/math.h"
+#include "path/splat.h"
+
+namespace relt {
+
+class Film {
+ public:
+  Film(int width, int height) : width_(width), height_(height), rgb_(size_t(3) * width * height, 0.0) {}
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  // Adds every splat of a sample scaled by `weight`. A sample with any NaN or infinite value is
+  // dropped whole and counted: one bad number must not poison a pixel.
+  bool addSample(const PathSample& sample, double weight = 1.0);
+  void addSplat(const Vec2& film, const Color& value, double weight);
+
+  // Raw sums (r, g, b per pixel, row-major from the top), reduced across ranks by the MPI layer.
+  std::vector<double>& data() { return rgb_; }
+  const std::vector<double>& data() const { return rgb_; }
+  uint64_t droppedSamples() const { return dropped_; }
+
+ private:
+  int width_, height_;
+  std::vector<double> rgb_;
+  uint64_t dropped_ = 0;
+};
+
+}  // namespace relt

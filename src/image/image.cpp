@@ -1,0 +1,125 @@
+#include "image/image.h"
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb_image_write.h>
+
+#include "core/error.h"
+
+namespace relt {
+
+double Image::mean() const {
+  double sum = 0.0;
+  for (float v : rgb) sum += v;
+  return rgb.empty() ? 0.0 : sum / static_cast<double>(rgb.size());
+}
+
+std::string temporaryPathFor(const std::string& path) {
+  const std::filesystem::path p(path);
+  return (p.parent_path() / ("." + p.filename().string() + ".tmp" + std::to_string(::getpid()))).string();
+}
+
+void commitTemporary(const std::string& tmp, const std::string& path) {
+  // fsync before rename so that a crash leaves either the old or the new file, never a torn one.
+  const int fd = ::open(tmp.c_str(), O_RDONLY);
+  if (fd >= 0) {
+    ::fsync(fd);
+    ::close(fd);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    std::remove(tmp.c_str());
+    throw InputError(path, "", "cannot write: " + reason);
+  }
+}
+
+void writeFileAtomically(const std::string& path, const std::string& content) {
+  const std::string tmp = temporaryPathFor(path);
+  FILE* f = std::fopen(tmp.c_str(), "wb");
+  if (!f) throw InputError(path, "", std::string("cannot write: ") + std::strerror(errno));
+  const bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size();
+  const bool closed = std::fclose(f) == 0;
+  if (!ok || !closed) {
+    std::remove(tmp.c_str());
+    throw InputError(path, "", "write failed (disk full?)");
+  }
+  commitTemporary(tmp, path);
+}
+
+void writeExr(const std::string& path, const Image& image) {
+  const std::string tmp = temporaryPathFor(path);
+  try {
+    Imf::Header header(image.width, image.height);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
+    Imf::OutputFile file(tmp.c_str(), header);
+    Imf::FrameBuffer fb;
+    char* base = reinterpret_cast<char*>(const_cast<float*>(image.rgb.data()));
+    const size_t xs = 3 * sizeof(float), ys = xs * image.width;
+    fb.insert("R", Imf::Slice(Imf::FLOAT, base, xs, ys));
+    fb.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xs, ys));
+    fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
+    file.setFrameBuffer(fb);
+    file.writePixels(image.height);
+  } catch (const std::exception& e) {
+    std::remove(tmp.c_str());
+    throw InputError(path, "", std::string("cannot write EXR: ") + e.what());
+  }
+  commitTemporary(tmp, path);
+}
+
+Image readExr(const std::string& path) {
+  try {
+    Imf::InputFile file(path.c_str());
+    const Imath::Box2i dw = file.header().dataWindow();
+    Image image(dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1);
+    Imf::FrameBuffer fb;
+    const size_t xs = 3 * sizeof(float), ys = xs * image.width;
+    char* base = reinterpret_cast<char*>(image.rgb.data()) - (dw.min.x * xs + dw.min.y * ys);
+    fb.insert("R", Imf::Slice(Imf::FLOAT, base, xs, ys));
+    fb.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xs, ys));
+    fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
+    file.setFrameBuffer(fb);
+    file.readPixels(dw.min.y, dw.max.y);
+    return image;
+  } catch (const std::exception& e) {
+    throw InputError(path, "", std::string("cannot read EXR: ") + e.what());
+  }
+}
+
+namespace {
+unsigned char toSrgb8(float linear) {
+  if (!(linear > 0.0f)) return 0;
+  const float v = linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
+  return static_cast<unsigned char>(std::lround(std::min(1.0f, v) * 255.0f));
+}
+
+void appendToString(void* context, void* data, int size) {
+  static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
+}
+}  // namespace
+
+void writePng(const std::string& path, const Image& image, float exposure) {
+  const float scale = std::exp2(exposure);
+  std::vector<unsigned char> bytes(image.rgb.size());
+  for (size_t i = 0; i < bytes.size(); ++i) bytes[i] = toSrgb8(image.rgb[i] * scale);
+  std::string png;
+  if (!stbi_write_png_to_func(appendToString, &png, image.width, image.height, 3, bytes.data(), 3 * image.width))
+    throw InputError(path, "", "cannot encode PNG");
+  writeFileAtomically(path, png);
+}
+
+}  // namespace relt

@@ -1,0 +1,30 @@
+#pragma once
+// Float RGB images and their files: OpenEXR (float channels) and PNG previews (sRGB, exposure).
+// Every write goes to a temporary file in the same directory and is renamed into place, so a
+// reader never sees a partial image.
+#include <string>
+#include <vector>
+
+namespace relt {
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<float> rgb;  // row-major from the top, 3 floats per pixel
+
+  Image() = default;
+  Image(int w, int h) : width(w), height(h), rgb(size_t(3) * w * h, 0.0f) {}
+  double mean() const;  // mean over pixels and channels
+};
+
+// Throws InputError (file, "", reason) if the file cannot be written or read.
+void writeExr(const std::string& path, const Image& image);
+Image readExr(const std::string& path);
+void writePng(const std::string& path, const Image& image, float exposure);
+
+// Writes `content` to `path` atomically (temporary file, fsync, rename).
+void writeFileAtomically(const std::string& path, const std::string& content);
+// A temporary name next to `path` for atomic writes.
+std::string temporaryPathFor(const std::string& path);
+void commitTemporary(const std::string& tmp, const std::string& path);
+
+}  // namespace relt

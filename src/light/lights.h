@@ -1,0 +1,64 @@
+#pragma once
+// Emitters: every emissive triangle is an area light, every KHR_lights_punctual light a point or
+// spot light. One light is picked per sample in proportion to its power.
+#include <vector>
+
+#include "core/math.h"
+#include "core/sampling.h"
+#include "scene/ray_tracer.h"
+
+namespace relt {
+
+struct Light {
+  enum class Kind : uint8_t { Triangle, Point };
+  Kind kind = Kind::Triangle;
+  uint32_t index = 0;  // triangle id, or index into Scene::punctualLights
+};
+
+// A point on a light chosen for next-event estimation or as a light subpath origin.
+struct LightPoint {
+  uint32_t light = 0;     // index into LightSampler's light list
+  SurfacePoint sp;        // position; normals meaningful for area lights only
+  bool delta = false;     // punctual: position is a Dirac delta
+  float pdfPick = 0.0f;   // probability of having picked this light
+  float pdfPos = 0.0f;    // area density of the position (1 for punctual lights)
+};
+
+class LightSampler {
+ public:
+  LightSampler(const Scene& scene, const RayTracer& tracer);
+
+  bool empty() const { return lights_.empty(); }
+  size_t size() const { return lights_.size(); }
+  const Light& light(uint32_t i) const { return lights_[i]; }
+
+  // Pick a light by power and a position on it (u: one number for the pick, two for the position).
+  LightPoint samplePoint(float uPick, const Vec2& uPos) const;
+  // Radiance leaving an area light point in direction w (zero on the back of one-sided emitters).
+  Color emitted(const SurfacePoint& sp, const Vec3& w) const;
+  // Intensity of a punctual light in direction w (W/sr), including the spot falloff.
+  Color intensity(uint32_t light, const Vec3& w) const;
+
+  // Densities, for MIS: pick x position (area measure) of a given emissive triangle.
+  float pdfPickTriangle(uint32_t triangle) const;
+  float pdfPick(uint32_t light) const { return pick_.pmf(light); }
+  float pdfPosition(uint32_t light) const;
+  uint32_t lightOfTriangle(uint32_t triangle) const { return triangleLight_[triangle]; }
+
+  // Emission direction from a light point, and its solid-angle density.
+  struct Emission {
+    Vec3 dir;
+    float pdfDir = 0.0f;
+  };
+  Emission sampleDirection(const LightPoint& lp, const Vec2& u) const;
+  float pdfDirection(uint32_t light, const SurfacePoint& sp, const Vec3& w) const;
+
+ private:
+  const Scene& scene_;
+  const RayTracer& tracer_;
+  std::vector<Light> lights_;
+  std::vector<uint32_t> triangleLight_;  // triangle -> light index (UINT32_MAX if not emissive)
+  Distribution1D pick_;
+};
+
+}  // namespace relt

@@ -1,0 +1,28 @@
+#pragma once
+// Everything a path builder needs to trace one sample: the scene, its acceleration structure,
+// lights, camera and the integrator settings.
+#include "camera/camera.h"
+#include "light/lights.h"
+#include "scene/ray_tracer.h"
+
+namespace relt {
+
+enum class MisHeuristic : uint8_t { Balance, Power };
+
+struct PathSettings {
+  int maxDepth = 8;  // maximum number of path segments
+  MisHeuristic heuristic = MisHeuristic::Power;
+  int rrDepth = 3;   // path tracing: Russian roulette after this many segments
+};
+
+struct PathContext {
+  const Scene& scene;
+  const RayTracer& tracer;
+  const LightSampler& lights;
+  const Camera& camera;
+  PathSettings settings;
+};
+
+inline float misWeightTerm(float ratio, MisHeuristic h) { return h == MisHeuristic::Power ? ratio * ratio : ratio; }
+
+}  // namespace relt
