@@ -68,3 +68,13 @@ int allreduceMax(int value) {
 double collectiveSeconds() { return g_collectiveSeconds; }
 
 }  // namespace relt::mpi
+
+namespace relt::mpi {
+std::vector<double> allgather(double value) {
+  int size = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  std::vector<double> out(static_cast<size_t>(size));
+  MPI_Allgather(&value, 1, MPI_DOUBLE, out.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD);
+  return out;
+}
+}  // namespace relt::mpi

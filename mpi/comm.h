@@ -31,3 +31,8 @@ int allreduceMax(int value);
 double collectiveSeconds();
 
 }  // namespace relt::mpi
+
+namespace relt::mpi {
+// Every rank's value, in rank order, on every rank.
+std::vector<double> allgather(double value);
+}  // namespace relt::mpi

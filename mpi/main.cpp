@@ -1,2 +1,95 @@
-// Placeholder entry point while the driver is written.
-int main() { return 0; }
+// relt: the distributed renderer's entry point. Every run initialises MPI; a plain run is one rank.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <iostream>
+
+#include "comm.h"
+#include "core/error.h"
+#include "render_driver.h"
+#include "scene/gltf_loader.h"
+#include "scene/scene_summary.h"
+
+namespace {
+
+constexpr int kExitInput = 2;
+constexpr int kExitInternal = 1;
+
+struct Options {
+  relt::RenderSettings render;
+  std::string integrator = "bdpt", mis = "power";
+  std::string infoScene;
+};
+
+void addRenderOptions(CLI::App& cmd, Options& o) {
+  relt::RenderSettings& r = o.render;
+  cmd.add_option("scene", r.scenePath, "glTF 2.0 scene (.gltf or .glb)")->required()->check(CLI::ExistingFile);
+  cmd.add_option("-o,--output", r.output, "output image (OpenEXR, float RGB)")->required();
+  cmd.add_option("--png", r.png, "also write an sRGB PNG preview");
+  cmd.add_option("--stats", r.stats, "write settings and statistics as JSON");
+  cmd.add_option("--integrator", o.integrator, "light transport algorithm")
+      ->check(CLI::IsMember({"pt", "bdpt"}))
+      ->capture_default_str();
+  auto* spp = cmd.add_option("--spp", r.spp, "samples per pixel (default 16)")->check(CLI::Range(1, 1 << 24));
+  auto* time = cmd.add_option("--time", r.seconds, "render for this many seconds (decided collectively)")
+                   ->check(CLI::PositiveNumber);
+  spp->excludes(time);
+  cmd.add_option("--width", r.width, "image width (default: scene extras, else 256)")->check(CLI::Range(1, 16384));
+  cmd.add_option("--height", r.height, "image height (default: scene extras, else 256)")->check(CLI::Range(1, 16384));
+  cmd.add_option("--max-depth", r.maxDepth, "maximum path segments (default: scene extras, else 8)")
+      ->check(CLI::Range(1, 256));
+  cmd.add_option("--seed", r.seed, "random seed; the image depends only on it and the sample count")
+      ->capture_default_str();
+  cmd.add_option("--camera", r.camera, "camera name (default: the first camera)");
+  cmd.add_option("--exposure", r.exposure, "PNG exposure in stops")->capture_default_str();
+  cmd.add_option("--mis", o.mis, "MIS heuristic")->check(CLI::IsMember({"power", "balance"}))->capture_default_str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  relt::mpi::Session session(&argc, &argv);
+  const bool root = session.isRoot();
+
+  CLI::App app{"relt: replica-exchange light transport renderer (glTF 2.0 in, OpenEXR out), distributed with MPI.\n"
+               "Run under mpirun for several ranks; a plain run is one rank."};
+  app.require_subcommand(1);
+  Options o;
+  CLI::App* render = app.add_subcommand("render", "render a scene");
+  addRenderOptions(*render, o);
+  CLI::App* info = app.add_subcommand("info", "validate and summarise a scene");
+  info->add_option("scene", o.infoScene, "glTF 2.0 scene")->required();
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    if (root) std::cout << app.help();
+    return 0;
+  } catch (const CLI::CallForAllHelp& e) {
+    if (root) std::cout << app.help("", CLI::AppFormatMode::All);
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    if (root) std::fprintf(stderr, "relt: error: %s (see relt --help)\n", e.what());
+    return kExitInput;
+  }
+
+  try {
+    if (*info) {
+      const relt::Scene scene = relt::loadGltf(o.infoScene);
+      if (root) std::cout << relt::summarizeScene(scene);
+      return 0;
+    }
+    o.render.integrator = o.integrator == "pt" ? relt::Integrator::PathTracing : relt::Integrator::Bdpt;
+    o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
+    relt::mpi::runRender(session, o.render);
+    return 0;
+  } catch (const relt::InputError& e) {
+    if (root) std::fprintf(stderr, "relt: error: %s\n", e.what());
+    return kExitInput;
+  } catch (const std::exception& e) {
+    // A broken invariant on one rank must not leave the others waiting in a collective.
+    std::fprintf(stderr, "relt: internal error (rank %d): %s\n", session.rank(), e.what());
+    MPI_Abort(MPI_COMM_WORLD, kExitInternal);
+    return kExitInternal;
+  }
+}

@@ -1,7 +1,44 @@
 #include "test_support.h"
 
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <atomic>
+#include <cstdio>
+#include <filesystem>
+
 namespace relt::test {
 
 std::string sourcePath(const std::string& relative) { return std::string(RELT_SOURCE_DIR) + "/" + relative; }
+std::string reltBinary() { return RELT_BIN; }
+
+CommandResult runCommand(const std::string& command) {
+  CommandResult r;
+  FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return r;
+  std::array<char, 4096> buf;
+  size_t n;
+  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) r.output.append(buf.data(), n);
+  const int status = ::pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+std::string mpirun(int ranks) {
+  return "mpirun --allow-run-as-root --oversubscribe --mca pml ob1 --mca btl self,vader -np " + std::to_string(ranks) + " ";
+}
+
+std::string makeTempDir(const std::string& tag) {
+  static std::atomic<int> counter{0};
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("relt-test-" + tag + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir.string();
+}
+
+bool fileExists(const std::string& path) { return std::filesystem::exists(path); }
 
 }  // namespace relt::test

@@ -6,5 +6,20 @@ namespace relt::test {
 
 // Absolute path of a file in the source tree, e.g. sourcePath("scenes/cornell-box.gltf").
 std::string sourcePath(const std::string& relative);
+// The relt executable built alongside the tests.
+std::string reltBinary();
+
+struct CommandResult {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr together
+};
+// Runs a shell command, capturing its output and exit code.
+CommandResult runCommand(const std::string& command);
+// mpirun with the options this machine needs (root, oversubscription, no slow transports).
+std::string mpirun(int ranks);
+
+// A fresh empty directory under the system temp dir, unique per call.
+std::string makeTempDir(const std::string& tag);
+bool fileExists(const std::string& path);
 
 }  // namespace relt::test

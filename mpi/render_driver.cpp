@@ -1,0 +1,114 @@
+#include "render_driver.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.h"
+#include "render/renderer.h"
+#include "render/schedule.h"
+#include "scene/gltf_loader.h"
+
+namespace relt::mpi {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Fails before any work if an output cannot be created (checked on the root, shared with all).
+void checkOutputsWritable(const Session& session, const RenderSettings& s) {
+  std::string problem;
+  if (session.isRoot()) {
+    for (const std::string& path : {s.output, s.png, s.stats}) {
+      if (path.empty()) continue;
+      const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+      const std::string d = dir.empty() ? "." : dir.string();
+      if (!std::filesystem::is_directory(d)) {
+        problem = path + ": output directory '" + d + "' does not exist";
+        break;
+      }
+      if (::access(d.c_str(), W_OK) != 0) {
+        problem = path + ": output directory '" + d + "' is not writable";
+        break;
+      }
+    }
+  }
+  const int bad = allreduceMax(problem.empty() ? 0 : 1);
+  if (bad) throw InputError("", "", session.isRoot() ? problem : "output not writable");
+}
+
+}  // namespace
+
+void runRender(const Session& session, RenderSettings settings) {
+  const auto wallStart = Clock::now();
+  Renderer renderer(loadGltf(settings.scenePath), settings);
+  settings = renderer.settings();
+  if (session.isRoot())
+    for (const std::string& w : renderer.scene().warnings) std::fprintf(stderr, "relt: warning: %s\n", w.c_str());
+  checkOutputsWritable(session, settings);
+
+  Film film(settings.width, settings.height);
+  const int height = settings.height;
+  const bool timed = settings.seconds.has_value();
+  const int spp = settings.spp.value_or(timed ? 0 : 16);
+  const bool tty = ::isatty(STDERR_FILENO);
+  const auto renderStart = Clock::now();
+  double lastElapsed = 0.0, lastPass = 0.0, lastPrint = 0.0;
+  int passes = 0;
+  for (;;) {
+    if (timed ? !startAnotherPass(passes, lastElapsed, lastPass, *settings.seconds) : passes >= spp) break;
+    for (int row = 0; row < height; ++row)
+      if (ownsUnit(static_cast<uint64_t>(passes), row, height, session.rank(), session.size()))
+        renderer.renderRow(static_cast<uint64_t>(passes), row, film);
+    ++passes;
+    // A timed render agrees on the elapsed time every pass so all ranks stop after the same pass.
+    const double elapsed = timed ? allreduceMax(since(renderStart)) : since(renderStart);
+    lastPass = elapsed - lastElapsed;
+    lastElapsed = elapsed;
+    if (session.isRoot() && (elapsed - lastPrint >= 1.0)) {
+      lastPrint = elapsed;
+      const double fraction = timed ? std::min(1.0, elapsed / *settings.seconds) : double(passes) / spp;
+      const double rate = double(renderer.samples()) * session.size() / std::max(elapsed, 1e-9);
+      std::fprintf(stderr, tty ? "\r%s" : "%s\n", progressLine(fraction, elapsed, rate).c_str());
+    }
+  }
+  const double renderSeconds = allreduceMax(since(renderStart));
+  if (session.isRoot() && tty) std::fprintf(stderr, "\n");
+
+  reduceSumToRoot(film.data());
+  const uint64_t samples = allreduceSum(renderer.samples());
+  const uint64_t rays = allreduceSum(renderer.rays());
+  const uint64_t dropped = allreduceSum(film.droppedSamples());
+  const std::vector<double> collective = allgather(collectiveSeconds());
+  if (!session.isRoot()) return;
+
+  const Image image = Renderer::resolve(film, film.data(), passes);
+  writeExr(settings.output, image);
+  if (!settings.png.empty()) writePng(settings.png, image, settings.exposure);
+  const double wall = since(wallStart);
+  if (!settings.stats.empty()) {
+    nlohmann::json j;
+    j["settings"] = settings.toJson();
+    j["ranks"] = session.size();
+    j["spp"] = passes;
+    j["samples"] = samples;
+    j["rays"] = rays;
+    j["render_seconds"] = renderSeconds;
+    j["wall_seconds"] = wall;
+    j["samples_per_second"] = samples / std::max(renderSeconds, 1e-9);
+    j["rays_per_second"] = rays / std::max(renderSeconds, 1e-9);
+    j["samples_per_second_per_rank"] = samples / std::max(renderSeconds, 1e-9) / session.size();
+    j["nan_inf_samples_dropped"] = dropped;
+    j["collective_seconds_per_rank"] = collective;
+    j["image_mean"] = image.mean();
+    writeFileAtomically(settings.stats, j.dump(2) + "\n");
+  }
+  std::fprintf(stderr, "relt: %d spp, %.2f s, %.3f M samples/s, %.2f M rays/s; wrote %s%s%s\n", passes, renderSeconds,
+               samples / std::max(renderSeconds, 1e-9) * 1e-6, rays / std::max(renderSeconds, 1e-9) * 1e-6,
+               settings.output.c_str(), settings.png.empty() ? "" : " and ", settings.png.c_str());
+}
+
+}  // namespace relt::mpi

@@ -1,0 +1,60 @@
+#include "render/renderer.h"
+
+#include "core/error.h"
+#include "path/path_tracer.h"
+#include "scene/scene_summary.h"
+
+namespace relt {
+
+void resolveDefaults(const Scene& scene, RenderSettings& s) {
+  if (s.width <= 0) s.width = scene.defaults.width;
+  if (s.height <= 0) s.height = scene.defaults.height;
+  if (s.maxDepth <= 0) s.maxDepth = scene.defaults.maxDepth;
+}
+
+Renderer::Renderer(Scene scene, const RenderSettings& settings) : scene_(std::move(scene)), settings_(settings) {
+  resolveDefaults(scene_, settings_);
+  checkRenderable(scene_);
+  const PerspectiveCamera* cam = settings_.camera.empty() ? &scene_.cameras.front() : scene_.findCamera(settings_.camera);
+  if (!cam) {
+    std::string names;
+    for (const auto& c : scene_.cameras) names += (names.empty() ? "" : ", ") + c.name;
+    throw InputError(scene_.file, "--camera", "no camera named '" + settings_.camera + "' (cameras: " + names + ")");
+  }
+  tracer_ = std::make_unique<RayTracer>(scene_);
+  lights_ = std::make_unique<LightSampler>(scene_, *tracer_);
+  if (lights_->empty()) throw InputError(scene_.file, "scene", "no emitter with positive power");
+  camera_ = std::make_unique<Camera>(*cam, settings_.width, settings_.height);
+  PathSettings ps;
+  ps.maxDepth = settings_.maxDepth;
+  ps.heuristic = settings_.heuristic;
+  ctx_ = std::make_unique<PathContext>(PathContext{scene_, *tracer_, *lights_, *camera_, ps});
+  bdpt_ = std::make_unique<Bdpt>(*ctx_);
+}
+
+void Renderer::renderRow(uint64_t sampleIndex, int row, Film& film) {
+  const int w = settings_.width;
+  IndependentSource source(0);
+  for (int x = 0; x < w; ++x) {
+    const uint64_t pixel = static_cast<uint64_t>(row) * w + x;
+    source.reset(hashKey(settings_.seed, pixel, sampleIndex));
+    const Vec2 jitter = source.next2(SampleStream::Camera);
+    const Vec2 pos(x + jitter.x, row + jitter.y);
+    sample_.clear();
+    if (settings_.integrator == Integrator::PathTracing)
+      tracePath(*ctx_, pos, source, sample_);
+    else
+      bdpt_->trace(pos, source, sample_);
+    film.addSample(sample_);
+    ++samples_;
+  }
+}
+
+Image Renderer::resolve(const Film& film, const std::vector<double>& sums, double spp) {
+  Image image(film.width(), film.height());
+  const double scale = spp > 0.0 ? 1.0 / spp : 0.0;
+  for (size_t i = 0; i < sums.size(); ++i) image.rgb[i] = static_cast<float>(sums[i] * scale);
+  return image;
+}
+
+}  // namespace relt

@@ -1,0 +1,52 @@
+#pragma once
+// A scene ready to render: loaded, validated, with its acceleration structure, lights and camera,
+// and the independent-sample integrators (pt, bdpt) over units of work. The distributed layer
+// decides which rank renders which unit; the image depends only on the seed and which units were
+// rendered, never on who rendered them.
+#include <memory>
+
+#include "film/film.h"
+#include "image/image.h"
+#include "path/bdpt.h"
+#include "render/settings.h"
+
+namespace relt {
+
+class Renderer {
+ public:
+  // Takes a loaded scene; throws InputError if it cannot be rendered with these settings.
+  Renderer(Scene scene, const RenderSettings& settings);
+  Renderer(const Renderer&) = delete;  // the ray tracer refers to scene_
+  Renderer& operator=(const Renderer&) = delete;
+
+  const Scene& scene() const { return scene_; }
+  const Camera& camera() const { return *camera_; }
+  const RenderSettings& settings() const { return settings_; }
+  const PathContext& context() const { return *ctx_; }
+
+  // One unit of work: sample `sampleIndex` of every pixel of row `row`. Each pixel sample has its
+  // own random stream keyed by (seed, pixel, sample index).
+  void renderRow(uint64_t sampleIndex, int row, Film& film);
+
+  uint64_t samples() const { return samples_; }
+  uint64_t rays() const { return tracer_->rayCount(); }
+
+  // Film sums -> pixel values for `spp` samples per pixel.
+  static Image resolve(const Film& film, const std::vector<double>& sums, double spp);
+
+ private:
+  Scene scene_;
+  RenderSettings settings_;
+  std::unique_ptr<RayTracer> tracer_;
+  std::unique_ptr<LightSampler> lights_;
+  std::unique_ptr<Camera> camera_;
+  std::unique_ptr<PathContext> ctx_;
+  std::unique_ptr<Bdpt> bdpt_;
+  PathSample sample_;
+  uint64_t samples_ = 0;
+};
+
+// Applies the scene's defaults to settings left unset (width/height/max depth 0).
+void resolveDefaults(const Scene& scene, RenderSettings& settings);
+
+}  // namespace relt

@@ -1,0 +1,31 @@
+#include "render/settings.h"
+
+namespace relt {
+
+const char* integratorName(Integrator i) {
+  switch (i) {
+    case Integrator::PathTracing: return "pt";
+    case Integrator::Bdpt: return "bdpt";
+  }
+  return "?";
+}
+
+nlohmann::json RenderSettings::toJson() const {
+  nlohmann::json j;
+  j["scene"] = scenePath;
+  j["output"] = output;
+  if (!png.empty()) j["png"] = png;
+  j["integrator"] = integratorName(integrator);
+  if (spp) j["spp"] = *spp;
+  if (seconds) j["time"] = *seconds;
+  j["width"] = width;
+  j["height"] = height;
+  j["max_depth"] = maxDepth;
+  j["seed"] = seed;
+  j["camera"] = camera;
+  j["exposure"] = exposure;
+  j["mis"] = heuristic == MisHeuristic::Power ? "power" : "balance";
+  return j;
+}
+
+}  // namespace relt

@@ -1,0 +1,36 @@
+#pragma once
+// The effective settings of a render, filled in one place (the command line over the scene's
+// defaults) and written back into stats.json so every image says how it was made.
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "path/path_context.h"
+
+namespace relt {
+
+enum class Integrator : uint8_t { PathTracing, Bdpt };
+
+struct RenderSettings {
+  std::string scenePath;
+  std::string output;             // .exr
+  std::string png;                // optional preview
+  std::string stats;              // optional stats.json
+  Integrator integrator = Integrator::Bdpt;
+  std::optional<int> spp;         // samples per pixel (default when neither spp nor time: 16)
+  std::optional<double> seconds;  // time budget
+  int width = 0, height = 0;      // resolved (scene extras unless overridden)
+  int maxDepth = 0;
+  uint64_t seed = 1;
+  std::string camera;             // empty: first camera
+  float exposure = 0.0f;
+  MisHeuristic heuristic = MisHeuristic::Power;
+
+  nlohmann::json toJson() const;
+};
+
+const char* integratorName(Integrator i);
+
+}  // namespace relt

@@ -1,0 +1,76 @@
+// Every independent-sample integrator against an analytic answer (furnace) and against each other
+// (cornell-box), pbrt-v4 style: one fixture renders, one parameterised test per property.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "render_fixture.h"
+#include "scene/gltf_loader.h"
+#include "test_support.h"
+
+using namespace relt;
+using namespace relt::test;
+
+namespace {
+
+RenderSettings settingsFor(Integrator integrator, uint64_t seed, int spp, int size) {
+  RenderSettings s;
+  s.integrator = integrator;
+  s.seed = seed;
+  s.spp = spp;
+  s.width = s.height = size;
+  return s;
+}
+
+class IntegratorTest : public ::testing::TestWithParam<Integrator> {};
+
+}  // namespace
+
+// Closed sphere, emission Le and albedo a everywhere, camera inside: with at most D segments every
+// pixel is Le (1 - a^D) / (1 - a) (scenes/README.md).
+TEST_P(IntegratorTest, FurnaceMatchesAnalyticValueWithinOnePercent) {
+  const std::string path = sourcePath("scenes/furnace.gltf");
+  const Scene scene = loadGltf(path);
+  const double le = 1.0, a = 0.5;
+  const int depth = scene.defaults.maxDepth;
+  const double expected = le * (1.0 - std::pow(a, depth)) / (1.0 - a);
+  const Image image = renderInProcess(path, settingsFor(GetParam(), 7, 16, 32));
+  EXPECT_NEAR(image.mean(), expected, 0.01 * expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllIndependent, IntegratorTest,
+                         ::testing::Values(Integrator::PathTracing, Integrator::Bdpt),
+                         [](const auto& info) { return std::string(integratorName(info.param)); });
+
+// pt and bdpt estimate the same image: the mean and four regions agree within 4 standard errors,
+// the errors coming from independent seeds (fixed, so the test is deterministic).
+TEST(IntegratorAgreement, PtAndBdptAgreeOnCornellBox) {
+  const std::string path = sourcePath("scenes/cornell-box.gltf");
+  const int size = 48, spp = 16, seeds = 10;
+  struct Region {
+    const char* name;
+    int x0, y0, x1, y1;
+  };
+  const Region regions[] = {{"whole", 0, 0, size, size},
+                            {"top-left", 0, 0, size / 2, size / 2},
+                            {"top-right", size / 2, 0, size, size / 2},
+                            {"bottom-left", 0, size / 2, size / 2, size},
+                            {"bottom-right", size / 2, size / 2, size, size}};
+  std::vector<double> values[2][5];
+  const Integrator integrators[2] = {Integrator::PathTracing, Integrator::Bdpt};
+  for (int i = 0; i < 2; ++i)
+    for (int k = 0; k < seeds; ++k) {
+      const Image image = renderInProcess(path, settingsFor(integrators[i], 1000 * (i + 1) + k, spp, size));
+      for (int r = 0; r < 5; ++r)
+        values[i][r].push_back(regionMean(image, regions[r].x0, regions[r].y0, regions[r].x1, regions[r].y1));
+    }
+  for (int r = 0; r < 5; ++r) {
+    const Estimate pt = meanAndStandardError(values[0][r]);
+    const Estimate bdpt = meanAndStandardError(values[1][r]);
+    const double sigma = std::sqrt(pt.stderror * pt.stderror + bdpt.stderror * bdpt.stderror);
+    EXPECT_GT(pt.mean, 0.0);
+    EXPECT_LT(std::abs(pt.mean - bdpt.mean), 4.0 * sigma)
+        << regions[r].name << ": pt " << pt.mean << " +- " << pt.stderror << ", bdpt " << bdpt.mean << " +- "
+        << bdpt.stderror;
+  }
+}

@@ -1,0 +1,40 @@
+#include "render_fixture.h"
+
+#include <cmath>
+
+#include "render/renderer.h"
+#include "scene/gltf_loader.h"
+
+namespace relt::test {
+
+Image renderInProcess(const std::string& scene, RenderSettings settings) {
+  settings.scenePath = scene;
+  Renderer renderer(loadGltf(scene), settings);
+  const RenderSettings& s = renderer.settings();
+  Film film(s.width, s.height);
+  const int spp = s.spp.value_or(16);
+  for (int k = 0; k < spp; ++k)
+    for (int row = 0; row < s.height; ++row) renderer.renderRow(static_cast<uint64_t>(k), row, film);
+  return Renderer::resolve(film, film.data(), spp);
+}
+
+double regionMean(const Image& image, int x0, int y0, int x1, int y1) {
+  double sum = 0.0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x)
+      for (int c = 0; c < 3; ++c) sum += image.rgb[3 * (static_cast<size_t>(y) * image.width + x) + c];
+  return sum / (3.0 * (x1 - x0) * (y1 - y0));
+}
+
+Estimate meanAndStandardError(const std::vector<double>& v) {
+  Estimate e;
+  for (double x : v) e.mean += x;
+  e.mean /= static_cast<double>(v.size());
+  double var = 0.0;
+  for (double x : v) var += (x - e.mean) * (x - e.mean);
+  var /= static_cast<double>(v.size() - 1);
+  e.stderror = std::sqrt(var / static_cast<double>(v.size()));
+  return e;
+}
+
+}  // namespace relt::test

@@ -1,0 +1,24 @@
+#pragma once
+// One in-process fixture through which every integrator test renders: load a scene, render it
+// with given settings on this process alone, return the image (pixel values).
+#include <string>
+#include <vector>
+
+#include "image/image.h"
+#include "render/settings.h"
+
+namespace relt::test {
+
+Image renderInProcess(const std::string& scene, RenderSettings settings);
+
+// Mean of a rectangular region [x0, x1) x [y0, y1) over all channels (luminance is not needed
+// for agreement tests: every channel must agree).
+double regionMean(const Image& image, int x0, int y0, int x1, int y1);
+
+// Mean and standard error of the mean of independent estimates.
+struct Estimate {
+  double mean = 0.0, stderror = 0.0;
+};
+Estimate meanAndStandardError(const std::vector<double>& values);
+
+}  // namespace relt::test

@@ -1,0 +1,89 @@
+// The command line contract (DESIGN §6): bad options and bad input give one clear message on
+// stderr, exit code 2, and no output file.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "test_support.h"
+
+using namespace relt::test;
+
+namespace {
+
+const std::string kScene = sourcePath("scenes/cornell-box.gltf");
+
+struct BadInvocation {
+  const char* name;
+  std::string args;
+  const char* mentions;
+};
+
+int lineCount(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+
+}  // namespace
+
+class CliRejects : public ::testing::TestWithParam<BadInvocation> {};
+
+TEST_P(CliRejects, WithOneLineAndExitCode2AndNoOutput) {
+  const std::string dir = makeTempDir("cli");
+  const std::string out = dir + "/out.exr";
+  std::string args = GetParam().args;
+  for (size_t p; (p = args.find("OUT")) != std::string::npos;) args.replace(p, 3, out);
+  const CommandResult r = runCommand(reltBinary() + " " + args);
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_EQ(lineCount(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find(GetParam().mentions), std::string::npos) << r.output;
+  EXPECT_FALSE(fileExists(out));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    BadOptions, CliRejects,
+    ::testing::Values(BadInvocation{"NoSubcommand", "", "subcommand"},
+                      BadInvocation{"UnknownOption", "render " + kScene + " -o OUT --bogus 1", "bogus"},
+                      BadInvocation{"MissingOutput", "render " + kScene, "output"},
+                      BadInvocation{"MissingScene", "render /nonexistent.gltf -o OUT", "nonexistent"},
+                      BadInvocation{"UnknownIntegrator", "render " + kScene + " -o OUT --integrator magic", "magic"},
+                      BadInvocation{"NegativeSpp", "render " + kScene + " -o OUT --spp -3", "spp"},
+                      BadInvocation{"SppAndTime", "render " + kScene + " -o OUT --spp 4 --time 2", "time"},
+                      BadInvocation{"ZeroWidth", "render " + kScene + " -o OUT --width 0", "width"},
+                      BadInvocation{"HugeDepth", "render " + kScene + " -o OUT --max-depth 100000", "max-depth"},
+                      BadInvocation{"UnknownCamera", "render " + kScene + " -o OUT --camera nope --spp 1", "nope"},
+                      BadInvocation{"UnwritableOutput", "render " + kScene + " -o /nonexistent-dir/x.exr --spp 1",
+                                    "nonexistent-dir"},
+                      BadInvocation{"InvalidScene",
+                                    "render " + sourcePath("tests/data/gltf/invalid/validator/json/invalid_syntax.gltf") +
+                                        " -o OUT --spp 1",
+                                    "invalid_syntax.gltf"},
+                      BadInvocation{"DracoScene",
+                                    "render " + sourcePath("tests/data/gltf/invalid/draco-box/Box.gltf") + " -o OUT",
+                                    "KHR_draco_mesh_compression"}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+TEST(Cli, HelpListsTheSubcommandsAndExitsZero) {
+  const CommandResult r = runCommand(reltBinary() + " --help");
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_NE(r.output.find("render"), std::string::npos);
+  EXPECT_NE(r.output.find("info"), std::string::npos);
+}
+
+TEST(Cli, InfoSummarisesAValidScene) {
+  const CommandResult r = runCommand(reltBinary() + " info " + kScene);
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("triangles"), std::string::npos) << r.output;
+}
+
+TEST(Cli, InfoRejectsAnInvalidSceneWithExitCode2) {
+  const CommandResult r = runCommand(reltBinary() + " info " + sourcePath("tests/data/gltf/invalid/validator/asset/1_0_version.gltf"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_EQ(lineCount(r.output), 1) << r.output;
+}
+
+TEST(Cli, RenderWritesExrPngAndStats) {
+  const std::string dir = makeTempDir("cli-render");
+  const CommandResult r = runCommand(reltBinary() + " render " + kScene + " -o " + dir + "/a.exr --png " + dir +
+                                     "/a.png --stats " + dir + "/a.json --spp 1 --width 32 --height 24");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(fileExists(dir + "/a.exr"));
+  EXPECT_TRUE(fileExists(dir + "/a.png"));
+  EXPECT_TRUE(fileExists(dir + "/a.json"));
+}
