@@ -23,6 +23,21 @@ float cosAt(const PathVertex& v, const Vec3& w) {
 
 float remap0(float pdf) { return pdf != 0.0f ? pdf : 1.0f; }
 
+// Area density with which vertex `from`, reached from direction `arrive` (unit, towards the vertex
+// before it in the generating direction), generates vertex `to`.
+float pdfGenerate(const PathContext& ctx, const PathVertex& from, const Vec3& arrive, const PathVertex& to) {
+  const Vec3 w = glm::normalize(to.sp.p - from.sp.p);
+  float pdfW = 0.0f;
+  switch (from.type) {
+    case PathVertex::Type::Camera: pdfW = ctx.camera.pdfDirection(w); break;
+    case PathVertex::Type::Light: pdfW = ctx.lights.pdfDirection(from.light, from.sp, w); break;
+    case PathVertex::Type::Surface:
+      pdfW = from.bsdf->pdf(arrive, w) * continuationProbability(from.bsdf->material());
+      break;
+  }
+  return solidAngleToArea(pdfW, from, to);
+}
+
 bool anyDelta(std::span<const PathVertex> vertices) {
   for (const PathVertex& v : vertices)
     if (v.isSurface() && v.delta) return true;
@@ -31,20 +46,27 @@ bool anyDelta(std::span<const PathVertex> vertices) {
 
 }  // namespace
 
-void Bdpt::randomWalk(Ray ray, Color beta, float pdfDir, TransportMode mode, size_t maxVertices,
-                      SampleSource& source, SampleStream stream, std::vector<PathVertex>& path) const {
-  float pdfFwdW = pdfDir;
+// Densities are evaluated along the directions between stored vertex positions, not along the
+// sampled ray directions (which start from an offset origin): the MIS weights are then a function
+// of the path's vertices alone and sum to exactly 1 over the strategies that can make it.
+void Bdpt::randomWalk(Ray ray, Color beta, TransportMode mode, size_t maxVertices, SampleSource& source,
+                      SampleStream stream, std::vector<PathVertex>& path) const {
   while (path.size() < maxVertices) {
     SurfacePoint hit;
     float dist;
     if (!ctx_.tracer.intersect(ray, hit, dist)) return;
     {
+      PathVertex& prev = path.back();
       PathVertex v;
       v.type = PathVertex::Type::Surface;
       v.sp = hit;
-      v.wo = -ray.dir;
+      v.wo = glm::normalize(prev.sp.p - hit.p);
       v.beta = beta;
-      v.pdfFwd = solidAngleToArea(pdfFwdW, path.back(), v);
+      v.pdfFwd = pdfGenerate(ctx_, prev, prev.wo, v);
+      if (path.size() >= 2) {
+        PathVertex& prevPrev = path[path.size() - 2];
+        prevPrev.pdfRev = pdfGenerate(ctx_, prev, -v.wo, prevPrev);
+      }
       v.bsdf.emplace(ctx_.scene.materials[hit.material], hit.ns, hit.ng);
       v.delta = v.bsdf->isDelta();
       path.push_back(v);
@@ -61,15 +83,6 @@ void Bdpt::randomWalk(Ray ray, Color beta, float pdfDir, TransportMode mode, siz
     float scale = std::abs(glm::dot(cur.sp.ns, bs->wi)) / (bs->pdf * q);
     if (mode == TransportMode::Importance) scale *= shadingCorrection(cur.sp, cur.wo, bs->wi);
     beta *= bs->f * scale;
-    float pdfRevW = 0.0f;
-    if (bs->delta) {
-      pdfFwdW = 0.0f;
-    } else {
-      pdfFwdW = bs->pdf * q;
-      pdfRevW = cur.bsdf->pdf(bs->wi, cur.wo) * q;
-    }
-    PathVertex& prev = path[path.size() - 2];
-    prev.pdfRev = solidAngleToArea(pdfRevW, cur, prev);
     if (isBlack(beta) || !isFinite(beta)) return;
     ray = ctx_.tracer.spawn(cur.sp, bs->wi);
   }
@@ -84,7 +97,7 @@ void Bdpt::generateCameraSubpath(const Vec2& film, SampleSource& source) {
   c.pdfFwd = 1.0f;
   camera_.push_back(c);
   const Vec3 dir = ctx_.camera.direction(film);
-  randomWalk(Ray{c.sp.p, dir, INFINITY}, Color(1.0f), ctx_.camera.pdfDirection(dir), TransportMode::Radiance,
+  randomWalk(Ray{c.sp.p, dir, INFINITY}, Color(1.0f), TransportMode::Radiance,
              static_cast<size_t>(ctx_.settings.maxDepth) + 1, source, SampleStream::Camera, camera_);
 }
 
@@ -110,7 +123,7 @@ void Bdpt::generateLightSubpath(SampleSource& source) {
   if (isBlack(le)) return;
   const Color beta = le * (cosAt(l, em.dir) / (l.pdfFwd * em.pdfDir));
   const Vec3 origin = lp.delta ? lp.sp.p : ctx_.tracer.offsetOrigin(lp.sp.p, lp.sp.ng, em.dir);
-  randomWalk(Ray{origin, em.dir, INFINITY}, beta, em.pdfDir, TransportMode::Importance,
+  randomWalk(Ray{origin, em.dir, INFINITY}, beta, TransportMode::Importance,
              static_cast<size_t>(ctx_.settings.maxDepth), source, SampleStream::Light, light_);
 }
 
@@ -202,24 +215,6 @@ void Bdpt::connect(int s, int t, const Vec2& film, SampleSource& source, PathSam
   if (observer_) observer_(lightSpan, cameraSpan, weight, contrib);
 }
 
-namespace {
-
-// Area density with which vertex `from`, reached from direction `arrive` (unit, towards the vertex
-// before it in the generating direction), generates vertex `to`.
-float pdfGenerate(const PathContext& ctx, const PathVertex& from, const Vec3& arrive, const PathVertex& to) {
-  const Vec3 w = glm::normalize(to.sp.p - from.sp.p);
-  float pdfW = 0.0f;
-  switch (from.type) {
-    case PathVertex::Type::Camera: pdfW = ctx.camera.pdfDirection(w); break;
-    case PathVertex::Type::Light: pdfW = ctx.lights.pdfDirection(from.light, from.sp, w); break;
-    case PathVertex::Type::Surface:
-      pdfW = from.bsdf->pdf(arrive, w) * continuationProbability(from.bsdf->material());
-      break;
-  }
-  return solidAngleToArea(pdfW, from, to);
-}
-
-}  // namespace
 
 float Bdpt::misWeight(std::span<PathVertex> light, std::span<PathVertex> camera) const {
   const int s = static_cast<int>(light.size()), t = static_cast<int>(camera.size()), n = s + t;

@@ -31,8 +31,8 @@ class Bdpt {
   float misWeight(std::span<PathVertex> light, std::span<PathVertex> camera) const;
 
  private:
-  void randomWalk(Ray ray, Color beta, float pdfDir, TransportMode mode, size_t maxVertices,
-                  SampleSource& source, SampleStream stream, std::vector<PathVertex>& path) const;
+  void randomWalk(Ray ray, Color beta, TransportMode mode, size_t maxVertices, SampleSource& source,
+                  SampleStream stream, std::vector<PathVertex>& path) const;
   void generateCameraSubpath(const Vec2& film, SampleSource& source);
   void generateLightSubpath(SampleSource& source);
   void connect(int s, int t, const Vec2& film, SampleSource& source, PathSample& out);

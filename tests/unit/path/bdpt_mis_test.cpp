@@ -1,7 +1,8 @@
 // BDPT's MIS weights, computed incrementally from the subpaths' stored densities, against a
 // brute-force recomputation of every strategy's density from the full path's geometry
 // (Veach 1997 §10.2; thesis digest §1.6). Equal weights for every strategy of random paths mean
-// the weights of all strategies that can make a path sum to 1.
+// the weights of all strategies that can make a path sum to 1. The tolerance covers float
+// round-off in the renderer's incremental ratio walk.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -104,7 +105,7 @@ void checkScene(const std::string& name, MisHeuristic heuristic) {
   int withDelta = 0, checked = 0;
   for (const Record& rec : records) {
     const double expected = bruteForceWeight(renderer, rec, heuristic);
-    ASSERT_NEAR(rec.weight, expected, 2e-3 * std::max(1.0, expected))
+    ASSERT_NEAR(rec.weight, expected, 2e-4 * std::max(1.0, expected))
         << name << ": strategy s=" << rec.s << " t=" << rec.path.size() - rec.s;
     ++checked;
     for (const PathVertex& v : rec.path) withDelta += v.type == PathVertex::Type::Surface && v.delta;
