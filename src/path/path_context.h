@@ -12,7 +12,7 @@ enum class MisHeuristic : uint8_t { Balance, Power };
 struct PathSettings {
   int maxDepth = 8;  // maximum number of path segments
   MisHeuristic heuristic = MisHeuristic::Power;
-  int rrDepth = 3;   // path tracing: Russian roulette after this many segments
+  int rrDepth = 2;   // path tracing: Russian roulette from this many segments on (pbrt-v4 convention)
 };
 
 struct PathContext {
