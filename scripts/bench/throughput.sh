@@ -1,29 +1,40 @@
 #!/usr/bin/env bash
 # Throughput figures for docs/BENCHMARKS.md: incoherent closest-hit rays/s per core on cornell-box
-# and ring, and pt / bdpt samples/s per core on cornell-box at 256x256, max depth 8.
-# Usage: scripts/bench/throughput.sh [SPP_PT] [SPP_BDPT]   (writes out/bench/throughput.json)
+# and ring, and pt / bdpt samples/s per core on cornell-box at 256x256, max depth 8, on 1 and 2
+# ranks. Every figure is the median of REPEATS runs. Run it on an otherwise idle machine.
+# Usage: scripts/bench/throughput.sh [SPP_PT] [SPP_BDPT] [REPEATS]   (writes out/bench/throughput.txt)
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
-SPP_PT="${1:-64}"
-SPP_BDPT="${2:-16}"
+SPP_PT="${1:-256}"
+SPP_BDPT="${2:-64}"
+REPEATS="${3:-3}"
 OUT="$ROOT/out/bench"
 mkdir -p "$OUT"
+
+median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
+
 {
-  echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores"
+  echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores; $(date -u +%Y-%m-%d); commit $(git -C "$ROOT" rev-parse --short HEAD)"
   for scene in cornell-box ring; do
-    "$BUILD_DIR/relt_bench_rays" "$ROOT/scenes/$scene.gltf" 4000000
+    rate=$(for _ in $(seq "$REPEATS"); do
+      "$BUILD_DIR/relt_bench_rays" "$ROOT/scenes/$scene.gltf" 4000000 | sed 's/.*"rays_per_second": \([0-9.]*\).*/\1/'
+    done | median)
+    awk -v s="$scene" -v r="$rate" 'BEGIN {printf "rays %-12s %6.2f M closest-hit rays/s per core\n", s, r / 1e6}'
   done
   for ranks in 1 2; do
     for integ in pt bdpt; do
-      spp=$SPP_PT; [ "$integ" = bdpt ] && spp=$SPP_BDPT
-      "${MPIRUN[@]}" -np "$ranks" "$BUILD_DIR/relt" render "$ROOT/scenes/cornell-box.gltf" -o "$OUT/$integ-np$ranks.exr" \
-        --integrator "$integ" --spp "$spp" --width 256 --height 256 --max-depth 8 --stats "$OUT/$integ-np$ranks.json" 2>/dev/null
-      /usr/bin/python3 - "$OUT/$integ-np$ranks.json" "$integ" "$ranks" <<'PY'
-import json, sys
-s = json.load(open(sys.argv[1]))
-print(f"{sys.argv[2]} np={sys.argv[3]}: {s['samples_per_second_per_rank']/1e6:.3f} M samples/s per rank, "
-      f"{s['rays_per_second']/1e6:.2f} M rays/s total, {s['spp']} spp in {s['render_seconds']:.2f} s")
-PY
+      spp=$SPP_PT
+      [ "$integ" = bdpt ] && spp=$SPP_BDPT
+      stats="$OUT/$integ-np$ranks.json"
+      rates=$(for _ in $(seq "$REPEATS"); do
+        "${MPIRUN[@]}" -np "$ranks" "$BUILD_DIR/relt" render "$ROOT/scenes/cornell-box.gltf" -o "$OUT/$integ-np$ranks.exr" \
+          --integrator "$integ" --spp "$spp" --width 256 --height 256 --max-depth 8 --stats "$stats" 2>/dev/null
+        /usr/bin/python3 -c "import json,sys; s=json.load(open(sys.argv[1])); print(s['samples_per_second_per_rank'], s['rays_per_second'] / s['ranks'])" "$stats"
+      done)
+      samples=$(echo "$rates" | cut -d' ' -f1 | median)
+      rays=$(echo "$rates" | cut -d' ' -f2 | median)
+      awk -v i="$integ" -v n="$ranks" -v s="$samples" -v r="$rays" -v spp="$spp" -v k="$REPEATS" 'BEGIN {
+        printf "%-4s np=%d: %5.3f M samples/s per core, %5.2f M rays/s per core (%d spp, median of %d)\n", i, n, s / 1e6, r / 1e6, spp, k}'
     done
   done
 } | tee "$OUT/throughput.txt"
