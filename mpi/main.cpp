@@ -23,7 +23,7 @@ struct Options {
 
 void addRenderOptions(CLI::App& cmd, Options& o) {
   relt::RenderSettings& r = o.render;
-  cmd.add_option("scene", r.scenePath, "glTF 2.0 scene (.gltf or .glb)")->required()->check(CLI::ExistingFile);
+  cmd.add_option("scene", r.scenePath, "glTF 2.0 scene (.gltf or .glb)")->required();
   cmd.add_option("-o,--output", r.output, "output image (OpenEXR, float RGB)")->required();
   cmd.add_option("--png", r.png, "also write an sRGB PNG preview");
   cmd.add_option("--stats", r.stats, "write settings and statistics as JSON");
@@ -76,7 +76,8 @@ int main(int argc, char** argv) {
   try {
     if (*info) {
       const relt::Scene scene = relt::loadGltf(o.infoScene);
-      if (root) std::cout << relt::summarizeScene(scene);
+      if (root) std::cout << relt::summarizeScene(scene) << std::flush;
+      relt::checkRenderable(scene);  // a valid file that cannot be rendered is still exit 2
       return 0;
     }
     o.render.integrator = o.integrator == "pt" ? relt::Integrator::PathTracing : relt::Integrator::Bdpt;
