@@ -1,10 +1,14 @@
 #include "film/film.h"
 
+#include <cmath>
+
 namespace relt {
 
 void Film::addSplat(const Vec2& film, const Color& value, double weight) {
-  const int x = static_cast<int>(film.x), y = static_cast<int>(film.y);
-  if (x < 0 || y < 0 || x >= width_ || y >= height_) return;
+  // Box filter of one pixel: floor, not truncation, so (-1, 0) is off the film; NaN fails the test.
+  const float fx = std::floor(film.x), fy = std::floor(film.y);
+  if (!(fx >= 0.0f && fy >= 0.0f && fx < static_cast<float>(width_) && fy < static_cast<float>(height_))) return;
+  const int x = static_cast<int>(fx), y = static_cast<int>(fy);
   double* px = &rgb_[3 * (static_cast<size_t>(y) * width_ + x)];
   px[0] += weight * value.x;
   px[1] += weight * value.y;

@@ -34,7 +34,9 @@ LightSampler::LightSampler(const Scene& scene, const RayTracer& tracer)
     const PunctualLight& l = scene.punctualLights[i];
     if (isBlack(l.intensity)) continue;
     lights_.push_back({Light::Kind::Point, i});
-    const double solidAngle = l.spot ? 2.0 * kPi * (1.0 - 0.5 * (l.cosInner + l.cosOuter)) : 4.0 * kPi;
+    // Integral of spotFalloff over the sphere: full inside the inner cone, quadratic ramp to the outer.
+    const double solidAngle =
+        l.spot ? 2.0 * kPi * ((1.0 - l.cosInner) + (l.cosInner - l.cosOuter) / 3.0) : 4.0 * kPi;
     power.push_back(solidAngle * luminance(l.intensity));
   }
   pick_ = Distribution1D(power);

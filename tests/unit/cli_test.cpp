@@ -78,6 +78,15 @@ TEST(Cli, InfoRejectsAnInvalidSceneWithExitCode2) {
   EXPECT_EQ(lineCount(r.output), 1) << r.output;
 }
 
+TEST(Cli, InfoSummarisesAValidButUnrenderableSceneThenFailsWithExitCode2) {
+  // A valid glTF file without a camera or emitter: summary on stdout, one error line, exit 2.
+  const CommandResult r =
+      runCommand(reltBinary() + " info " + sourcePath("tests/data/gltf/valid/Khronos-SimpleMeshes/SimpleMeshes.gltf"));
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find("triangles: 2"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("SimpleMeshes.gltf: scene: no camera"), std::string::npos) << r.output;
+}
+
 TEST(Cli, RenderWritesExrPngAndStats) {
   const std::string dir = makeTempDir("cli-render");
   const CommandResult r = runCommand(reltBinary() + " render " + kScene + " -o " + dir + "/a.exr --png " + dir +
