@@ -137,6 +137,11 @@ float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
   return evalLocal(*material_, frame_, ng_, alpha_, rough_.distribution, wo, wi, TransportMode::Radiance).pdf;
 }
 
+Bsdf::Value Bsdf::evaluate(const Vec3& wo, const Vec3& wi, TransportMode mode) const {
+  const LobeValue v = evalLocal(*material_, frame_, ng_, alpha_, rough_.distribution, wo, wi, mode);
+  return {v.f, v.pdf};
+}
+
 std::optional<BsdfSample> Bsdf::sample(const Vec3& woW, const Vec2& u, float uLobe, TransportMode mode) const {
   const Material& mat = *material_;
   const float go = glm::dot(woW, ng_);

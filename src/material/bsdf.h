@@ -43,6 +43,12 @@ class Bsdf {
   // Density of sampling wi given wo. The reverse density is pdf(wi, wo) (with the mode swapped
   // where relevant: the density itself does not depend on the mode).
   float pdf(const Vec3& wo, const Vec3& wi) const;
+  // eval and pdf in one pass (next-event estimation needs both).
+  struct Value {
+    Color f;
+    float pdf;
+  };
+  Value evaluate(const Vec3& wo, const Vec3& wi, TransportMode mode) const;
   // u: two numbers for the direction, uLobe: one for the lobe choice (reflect/refract).
   std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float uLobe, TransportMode mode) const;
 

@@ -41,12 +41,13 @@ Color estimateDirect(const PathContext& ctx, const SurfacePoint& hit, const Bsdf
     if (!(cosL > 0.0f)) return Color(0.0f);
   }
   if (isBlack(li)) return Color(0.0f);
-  const Color f = bsdf.eval(wo, wi, TransportMode::Radiance) * std::abs(glm::dot(hit.ns, wi));
+  const Bsdf::Value fv = bsdf.evaluate(wo, wi, TransportMode::Radiance);
+  const Color f = fv.f * std::abs(glm::dot(hit.ns, wi));
   if (isBlack(f)) return Color(0.0f);
   const bool blocked = lp.delta ? ctx.tracer.occludedToPoint(hit.p, hit.ng, lp.sp.p)
                                 : ctx.tracer.occluded(hit.p, hit.ng, lp.sp.p, lp.sp.ng);
   if (blocked) return Color(0.0f);
-  const float w = lp.delta ? 1.0f : misWeight(pdfLight, bsdf.pdf(wo, wi), ctx.settings.heuristic);
+  const float w = lp.delta ? 1.0f : misWeight(pdfLight, fv.pdf, ctx.settings.heuristic);
   return f * li * (w / pdfLight);
 }
 

@@ -526,7 +526,7 @@ TEST(BsdfGeometry, DielectricOutsideIsWhereTheGeometricNormalPoints) {
   EXPECT_EQ(fromInside->pdf, 1.0f);
 }
 
-TEST(BsdfRobustness, NeverProducesNanOrInf) {
+TEST(BsdfRobustness, NeverProducesNanOrInfAndEvaluateMatchesEvalAndPdf) {
   std::vector<Material> materials = {lambert(), conductor(0.0f, Microfacet::GGX),
                                      dielectric(0.0f, Microfacet::GGX, 1.5f)};
   for (Microfacet d : {Microfacet::GGX, Microfacet::Beckmann})
@@ -552,6 +552,9 @@ TEST(BsdfRobustness, NeverProducesNanOrInf) {
         ASSERT_TRUE(isFinite(f) && f.x >= 0.0f && f.y >= 0.0f && f.z >= 0.0f) << int(m.kind) << " " << m.alpha;
         const float p = bsdf.pdf(wo, wi);
         ASSERT_TRUE(std::isfinite(p) && p >= 0.0f);
+        const Bsdf::Value v = bsdf.evaluate(wo, wi, mode);  // the fused call agrees exactly
+        ASSERT_EQ(v.f, f);
+        ASSERT_EQ(v.pdf, p);
       }
     };
     for (const Vec3& a : special)
