@@ -38,6 +38,18 @@ float pdfGenerate(const PathContext& ctx, const PathVertex& from, const Vec3& ar
   return solidAngleToArea(pdfW, from, to);
 }
 
+// First vertex of a light subpath (or the light end of an s = 1 connection).
+PathVertex lightVertex(const LightPoint& lp) {
+  PathVertex l;
+  l.type = PathVertex::Type::Light;
+  l.delta = lp.delta;
+  l.sp = lp.sp;
+  l.light = lp.light;
+  l.pdfFwd = lp.pdfPick * lp.pdfPos;
+  l.beta = Color(1.0f / l.pdfFwd);
+  return l;
+}
+
 bool anyDelta(std::span<const PathVertex> vertices) {
   for (const PathVertex& v : vertices)
     if (v.isSurface() && v.delta) return true;
@@ -108,14 +120,7 @@ void Bdpt::generateLightSubpath(SampleSource& source) {
   const Vec2 uDir = source.next2(SampleStream::Light);
   if (ctx_.lights.empty()) return;
   const LightPoint lp = ctx_.lights.samplePoint(uPick, uPos);
-  PathVertex l;
-  l.type = PathVertex::Type::Light;
-  l.delta = lp.delta;
-  l.sp = lp.sp;
-  l.light = lp.light;
-  l.pdfFwd = lp.pdfPick * lp.pdfPos;
-  l.beta = Color(1.0f / l.pdfFwd);
-  light_.push_back(l);
+  const PathVertex& l = light_.emplace_back(lightVertex(lp));
 
   const auto em = ctx_.lights.sampleDirection(lp, uDir);
   if (!(em.pdfDir > 0.0f)) return;
@@ -177,12 +182,7 @@ void Bdpt::connect(int s, int t, const Vec2& film, SampleSource& source, PathSam
     const float uPick = source.next(SampleStream::Connection);
     const Vec2 uPos = source.next2(SampleStream::Connection);
     const LightPoint lp = ctx_.lights.samplePoint(uPick, uPos);
-    sampled.type = PathVertex::Type::Light;
-    sampled.delta = lp.delta;
-    sampled.sp = lp.sp;
-    sampled.light = lp.light;
-    sampled.pdfFwd = lp.pdfPick * lp.pdfPos;
-    sampled.beta = Color(1.0f / sampled.pdfFwd);
+    sampled = lightVertex(lp);
     const Vec3 d = sampled.sp.p - c.sp.p;
     const float dist2 = glm::dot(d, d);
     if (!(dist2 > 0.0f)) return;
