@@ -1,9 +1,11 @@
 #pragma once
-// Embree 3 wrapper: closest-hit and occlusion queries over the scene's triangles, plus the
-// per-triangle data (geometric normal, area) that shading and light sampling need.
+// Embree 3 wrapper: closest-hit and occlusion queries over the scene's triangles (handed to Embree
+// as quads, see quad_pairing.h), plus the per-triangle data (geometric normal, area) that shading
+// and light sampling need.
 #include <vector>
 
 #include "core/math.h"
+#include "scene/quad_pairing.h"
 #include "scene/scene.h"
 
 // Embree handles are opaque pointers; keep embree headers out of the rest of the renderer.
@@ -57,6 +59,7 @@ class RayTracer {
   const Scene& scene_;
   RTCDevice device_ = nullptr;
   RTCScene rtcScene_ = nullptr;
+  std::vector<QuadPrimitive> quads_;  // what Embree holds: the triangles paired into quads
   std::vector<Vec3> ng_;
   std::vector<float> area_;
   float epsilonScale_ = 1.0f;
