@@ -24,6 +24,7 @@ RayTracer::RayTracer(const Scene& scene) : scene_(scene) {
   const size_t nt = scene.triangles.size();
   ng_.resize(nt);
   area_.resize(nt);
+  flatNs_.resize(nt);
   for (size_t i = 0; i < nt; ++i) {
     const Triangle& t = scene.triangles[i];
     const Vec3 c = glm::cross(scene.positions[t.v[1]] - scene.positions[t.v[0]],
@@ -31,6 +32,10 @@ RayTracer::RayTracer(const Scene& scene) : scene_(scene) {
     const float len = glm::length(c);
     area_[i] = 0.5f * len;
     ng_[i] = len > 0.0f ? c / len : Vec3(0, 0, 1);
+    // Equal (or missing) vertex normals: the shading normal is constant, no need to interpolate.
+    const Vec3 &n0 = scene.normals[t.v[0]], &n1 = scene.normals[t.v[1]], &n2 = scene.normals[t.v[2]];
+    const float len2 = glm::dot(n0, n0);
+    flatNs_[i] = n0 != n1 || n0 != n2 ? Vec3(0.0f) : len2 > 1e-12f ? n0 / std::sqrt(len2) : ng_[i];
   }
   const Vec3 ext = glm::max(glm::abs(scene.bounds.lo), glm::abs(scene.bounds.hi));
   epsilonScale_ = scene.bounds.empty() ? 1.0f : std::max(1.0f, std::max(ext.x, std::max(ext.y, ext.z)));
@@ -77,10 +82,14 @@ SurfacePoint RayTracer::surfacePoint(uint32_t t, float b1, float b2) const {
   SurfacePoint sp;
   sp.p = b0 * scene_.positions[tri.v[0]] + b1 * scene_.positions[tri.v[1]] + b2 * scene_.positions[tri.v[2]];
   sp.ng = ng_[t];
-  const Vec3 n = b0 * scene_.normals[tri.v[0]] + b1 * scene_.normals[tri.v[1]] + b2 * scene_.normals[tri.v[2]];
-  const float len2 = glm::dot(n, n);
-  // Missing or degenerate normals fall back to the geometric one (flat shading).
-  sp.ns = len2 > 1e-12f ? n / std::sqrt(len2) : sp.ng;
+  if (flatNs_[t].x != 0.0f || flatNs_[t].y != 0.0f || flatNs_[t].z != 0.0f) {
+    sp.ns = flatNs_[t];
+  } else {
+    const Vec3 n = b0 * scene_.normals[tri.v[0]] + b1 * scene_.normals[tri.v[1]] + b2 * scene_.normals[tri.v[2]];
+    const float len2 = glm::dot(n, n);
+    // Degenerate interpolated normals fall back to the geometric one (flat shading).
+    sp.ns = len2 > 1e-12f ? n / std::sqrt(len2) : sp.ng;
+  }
   sp.triangle = t;
   sp.material = tri.material;
   return sp;

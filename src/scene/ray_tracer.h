@@ -62,6 +62,7 @@ class RayTracer {
   std::vector<QuadPrimitive> quads_;  // what Embree holds: the triangles paired into quads
   std::vector<Vec3> ng_;
   std::vector<float> area_;
+  std::vector<Vec3> flatNs_;  // unit shading normal of triangles whose vertex normals agree, else 0
   float epsilonScale_ = 1.0f;
   mutable uint64_t rays_ = 0;
 };
