@@ -43,8 +43,7 @@ RayTracer::RayTracer(const Scene& scene) : scene_(scene) {
   rtcScene_ = rtcNewScene(device_);
   rtcSetSceneBuildQuality(rtcScene_, RTC_BUILD_QUALITY_HIGH);
   if (nt > 0) {
-    quads_ = pairTriangles(scene);
-    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_QUAD);
+    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_HIGH);
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                           3 * sizeof(float), scene.positions.size()));
@@ -53,10 +52,10 @@ RayTracer::RayTracer(const Scene& scene) : scene_(scene) {
       v[3 * i + 1] = scene.positions[i].y;
       v[3 * i + 2] = scene.positions[i].z;
     }
-    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
-                                                               4 * sizeof(unsigned), quads_.size()));
-    for (size_t i = 0; i < quads_.size(); ++i)
-      for (int k = 0; k < 4; ++k) idx[4 * i + k] = quads_[i].v[k];
+    auto* idx = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), nt));
+    for (size_t i = 0; i < nt; ++i)
+      for (int k = 0; k < 3; ++k) idx[3 * i + k] = scene.triangles[i].v[k];
     rtcCommitGeometry(geom);
     rtcAttachGeometry(rtcScene_, geom);
     rtcReleaseGeometry(geom);
@@ -117,8 +116,7 @@ bool RayTracer::intersect(const Ray& ray, SurfacePoint& hit, float& distance) co
   rtcIntersect1(rtcScene_, &ctx, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
   distance = rh.ray.tfar;
-  const TriangleHit th = triangleHit(quads_[rh.hit.primID], rh.hit.u, rh.hit.v);
-  hit = surfacePoint(th.triangle, th.b1, th.b2);
+  hit = surfacePoint(rh.hit.primID, rh.hit.u, rh.hit.v);
   return true;
 }
 

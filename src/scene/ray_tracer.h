@@ -1,11 +1,9 @@
 #pragma once
-// Embree 3 wrapper: closest-hit and occlusion queries over the scene's triangles (handed to Embree
-// as quads, see quad_pairing.h), plus the per-triangle data (geometric normal, area) that shading
-// and light sampling need.
+// Embree 3 wrapper: closest-hit and occlusion queries over the scene's triangles, plus the
+// per-triangle data (geometric normal, area) that shading and light sampling need.
 #include <vector>
 
 #include "core/math.h"
-#include "scene/quad_pairing.h"
 #include "scene/scene.h"
 
 // Embree handles are opaque pointers; keep embree headers out of the rest of the renderer.
@@ -59,7 +57,6 @@ class RayTracer {
   const Scene& scene_;
   RTCDevice device_ = nullptr;
   RTCScene rtcScene_ = nullptr;
-  std::vector<QuadPrimitive> quads_;  // what Embree holds: the triangles paired into quads
   std::vector<Vec3> ng_;
   std::vector<float> area_;
   std::vector<Vec3> flatNs_;  // unit shading normal of triangles whose vertex normals agree, else 0

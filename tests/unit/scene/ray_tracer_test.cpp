@@ -1,5 +1,5 @@
-// The Embree wrapper against brute force: quad pairing covers every triangle once and maps hits back
-// exactly; closest hits and occlusion agree with a plain ray-triangle test over all triangles.
+// The Embree wrapper against brute force: closest hits and occlusion agree with a plain
+// double-precision ray-triangle test over all triangles.
 #include <gtest/gtest.h>
 
 #include <optional>
@@ -7,7 +7,6 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "scene/gltf_loader.h"
-#include "scene/quad_pairing.h"
 #include "scene/ray_tracer.h"
 #include "test_support.h"
 
@@ -45,51 +44,6 @@ std::optional<BruteHit> bruteForce(const Scene& s, const Ray& ray) {
 }
 
 }  // namespace
-
-TEST(QuadPairing, EveryTriangleIsInExactlyOneQuadAndMostArePaired) {
-  for (const char* name : kScenes) {
-    const Scene s = load(name);
-    const std::vector<QuadPrimitive> quads = pairTriangles(s);
-    std::vector<int> seen(s.triangles.size(), 0);
-    size_t paired = 0;
-    for (const QuadPrimitive& q : quads) {
-      ++seen[q.tri[0]];
-      if (q.tri[1] != QuadPrimitive::kNone) {
-        ++seen[q.tri[1]];
-        ++paired;
-      } else {
-        EXPECT_EQ(q.v[3], q.v[2]) << name;
-      }
-    }
-    for (size_t t = 0; t < seen.size(); ++t) ASSERT_EQ(seen[t], 1) << name << " triangle " << t;
-    // The suite's meshes are indexed closed or quad-based surfaces: nearly all triangles pair up.
-    EXPECT_GE(2 * paired, s.triangles.size() * 8 / 10) << name;
-  }
-}
-
-TEST(QuadPairing, QuadParametrisationMapsToTheSamePointOnTheOriginalTriangle) {
-  for (const char* name : kScenes) {
-    const Scene s = load(name);
-    Rng rng(17);
-    for (const QuadPrimitive& q : pairTriangles(s)) {
-      const Vec3 v0 = s.positions[q.v[0]], v1 = s.positions[q.v[1]], v2 = s.positions[q.v[2]],
-                 v3 = s.positions[q.v[3]];
-      for (int i = 0; i < 8; ++i) {
-        const float u = rng.uniform(), v = rng.uniform();
-        // Embree's quad: triangle (v0, v1, v3) for u + v <= 1, else (v2, v3, v1) with (1 - u, 1 - v).
-        const Vec3 expected = u + v <= 1.0f ? v0 + u * (v1 - v0) + v * (v3 - v0)
-                                            : v2 + (1.0f - u) * (v3 - v2) + (1.0f - v) * (v1 - v2);
-        if (u + v > 1.0f && q.tri[1] == QuadPrimitive::kNone) continue;  // degenerate half
-        const TriangleHit h = triangleHit(q, u, v);
-        const Triangle& t = s.triangles[h.triangle];
-        const Vec3 p = (1.0f - h.b1 - h.b2) * s.positions[t.v[0]] + h.b1 * s.positions[t.v[1]] +
-                       h.b2 * s.positions[t.v[2]];
-        ASSERT_LT(glm::length(p - expected), 1e-4f * (1.0f + glm::length(expected))) << name;
-        ASSERT_TRUE(h.b1 >= -1e-6f && h.b2 >= -1e-6f && h.b1 + h.b2 <= 1.0f + 1e-6f) << name;
-      }
-    }
-  }
-}
 
 TEST(RayTracer, ClosestHitsAndOcclusionMatchBruteForce) {
   for (const char* name : kScenes) {
