@@ -25,6 +25,12 @@ Session::Session(int* argc, char*** argv) {
 
 Session::~Session() { MPI_Finalize(); }
 
+void allreduceSum(std::vector<double>& data) {
+  timed([&] {
+    MPI_Allreduce(MPI_IN_PLACE, data.data(), static_cast<int>(data.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
+  });
+}
+
 void reduceSumToRoot(std::vector<double>& data, int root) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);

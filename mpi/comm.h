@@ -23,6 +23,8 @@ class Session {
 
 // Sum of a double buffer onto the root (in place on the root).
 void reduceSumToRoot(std::vector<double>& data, int root = 0);
+// Element-wise sum over all ranks, result on every rank.
+void allreduceSum(std::vector<double>& data);
 double allreduceMax(double value);
 double allreduceSum(double value);
 uint64_t allreduceSum(uint64_t value);

@@ -28,12 +28,20 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--png", r.png, "also write an sRGB PNG preview");
   cmd.add_option("--stats", r.stats, "write settings and statistics as JSON");
   cmd.add_option("--integrator", o.integrator, "light transport algorithm")
-      ->check(CLI::IsMember({"pt", "bdpt"}))
+      ->check(CLI::IsMember({"pt", "bdpt", "pssmlt"}))
       ->capture_default_str();
   auto* spp = cmd.add_option("--spp", r.spp, "samples per pixel (default 16)")->check(CLI::Range(1, 1 << 24));
   auto* time = cmd.add_option("--time", r.seconds, "render for this many seconds (decided collectively)")
                    ->check(CLI::PositiveNumber);
+  auto* mpp = cmd.add_option("--mutations-per-pixel", r.mutationsPerPixel,
+                             "Markov-chain integrators: mutations per pixel (default 16)")
+                  ->check(CLI::Range(1e-3, 1e6));
   spp->excludes(time);
+  mpp->excludes(spp);
+  mpp->excludes(time);
+  cmd.add_option("--chains", r.chains, "Markov-chain integrators: number of chains (independent of the rank count)")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
   cmd.add_option("--width", r.width, "image width (default: scene extras, else 256)")->check(CLI::Range(1, 16384));
   cmd.add_option("--height", r.height, "image height (default: scene extras, else 256)")->check(CLI::Range(1, 16384));
   cmd.add_option("--max-depth", r.maxDepth, "maximum path segments (default: scene extras, else 8)")
@@ -80,7 +88,13 @@ int main(int argc, char** argv) {
       relt::checkRenderable(scene);  // a valid file that cannot be rendered is still exit 2
       return 0;
     }
-    o.render.integrator = o.integrator == "pt" ? relt::Integrator::PathTracing : relt::Integrator::Bdpt;
+    o.render.integrator = o.integrator == "pt"     ? relt::Integrator::PathTracing
+                          : o.integrator == "bdpt" ? relt::Integrator::Bdpt
+                                                   : relt::Integrator::Pssmlt;
+    const bool chains = o.render.integrator == relt::Integrator::Pssmlt;
+    if (chains && o.render.spp) throw relt::InputError("", "--spp", "pssmlt takes --mutations-per-pixel");
+    if (!chains && o.render.mutationsPerPixel)
+      throw relt::InputError("", "--mutations-per-pixel", "only for the Markov-chain integrators (pssmlt)");
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
     relt::mpi::runRender(session, o.render);
     return 0;

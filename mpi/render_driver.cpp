@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "render/renderer.h"
+#include "pssmlt_driver.h"
 #include "render/schedule.h"
 #include "scene/gltf_loader.h"
 
@@ -40,6 +41,16 @@ void checkOutputsWritable(const Session& session, const RenderSettings& s) {
   if (bad) throw InputError("", "", session.isRoot() ? problem : "output not writable");
 }
 
+// EXR, optional PNG and stats (with the wall time added), each written atomically. Root only.
+void writeOutputs(const RenderSettings& settings, const Image& image, nlohmann::json stats, Clock::time_point wallStart) {
+  writeExr(settings.output, image);
+  if (!settings.png.empty()) writePng(settings.png, image, settings.exposure);
+  if (!settings.stats.empty()) {
+    stats["wall_seconds"] = since(wallStart);
+    writeFileAtomically(settings.stats, stats.dump(2) + "\n");
+  }
+}
+
 }  // namespace
 
 void runRender(const Session& session, RenderSettings settings) {
@@ -51,6 +62,42 @@ void runRender(const Session& session, RenderSettings settings) {
   checkOutputsWritable(session, settings);
 
   Film film(settings.width, settings.height);
+  if (settings.integrator == Integrator::Pssmlt) {
+    if (settings.seconds) throw InputError("", "--time", "not implemented for pssmlt yet; use --mutations-per-pixel");
+    const auto renderStart = Clock::now();
+    const PssmltOutcome o = runPssmlt(session, renderer, settings, film);
+    const double renderSeconds = allreduceMax(since(renderStart));
+    reduceSumToRoot(film.data());
+    const uint64_t rays = allreduceSum(renderer.rays());
+    const uint64_t dropped = allreduceSum(film.droppedSamples());
+    const std::vector<double> collective = allgather(collectiveSeconds());
+    if (!session.isRoot()) return;
+    const double area = double(settings.width) * settings.height;
+    const Image image = Renderer::resolve(film, film.data(), pssmltResolveDivisor(o.totalMutations, o.normaliser, area));
+    const uint64_t mutations = o.counters.smallProposed + o.counters.largeProposed;
+    nlohmann::json j;
+    j["settings"] = settings.toJson();
+    j["ranks"] = session.size();
+    j["mutations"] = mutations;
+    j["bootstrap_samples"] = o.bootstrapSamples;
+    j["normaliser"] = o.normaliser;
+    j["acceptance_small"] = o.counters.smallProposed ? double(o.counters.smallAccepted) / o.counters.smallProposed : 0.0;
+    j["acceptance_large"] = o.counters.largeProposed ? double(o.counters.largeAccepted) / o.counters.largeProposed : 0.0;
+    j["invalid_proposals"] = o.counters.invalidProposals;
+    j["rays"] = rays;
+    j["render_seconds"] = renderSeconds;
+    j["mutations_per_second"] = mutations / std::max(renderSeconds, 1e-9);
+    j["mutations_per_second_per_rank"] = mutations / std::max(renderSeconds, 1e-9) / session.size();
+    j["rays_per_second"] = rays / std::max(renderSeconds, 1e-9);
+    j["nan_inf_samples_dropped"] = dropped;
+    j["collective_seconds_per_rank"] = collective;
+    j["image_mean"] = image.mean();
+    writeOutputs(settings, image, j, wallStart);
+    std::fprintf(stderr, "relt: %llu mutations, %.2f s, %.3f M mutations/s; wrote %s\n",
+                 static_cast<unsigned long long>(mutations), renderSeconds,
+                 mutations / std::max(renderSeconds, 1e-9) * 1e-6, settings.output.c_str());
+    return;
+  }
   const int height = settings.height;
   const bool timed = settings.seconds.has_value();
   const int spp = settings.spp.value_or(timed ? 0 : 16);
@@ -86,26 +133,20 @@ void runRender(const Session& session, RenderSettings settings) {
   if (!session.isRoot()) return;
 
   const Image image = Renderer::resolve(film, film.data(), passes);
-  writeExr(settings.output, image);
-  if (!settings.png.empty()) writePng(settings.png, image, settings.exposure);
-  const double wall = since(wallStart);
-  if (!settings.stats.empty()) {
-    nlohmann::json j;
-    j["settings"] = settings.toJson();
-    j["ranks"] = session.size();
-    j["spp"] = passes;
-    j["samples"] = samples;
-    j["rays"] = rays;
-    j["render_seconds"] = renderSeconds;
-    j["wall_seconds"] = wall;
-    j["samples_per_second"] = samples / std::max(renderSeconds, 1e-9);
-    j["rays_per_second"] = rays / std::max(renderSeconds, 1e-9);
-    j["samples_per_second_per_rank"] = samples / std::max(renderSeconds, 1e-9) / session.size();
-    j["nan_inf_samples_dropped"] = dropped;
-    j["collective_seconds_per_rank"] = collective;
-    j["image_mean"] = image.mean();
-    writeFileAtomically(settings.stats, j.dump(2) + "\n");
-  }
+  nlohmann::json j;
+  j["settings"] = settings.toJson();
+  j["ranks"] = session.size();
+  j["spp"] = passes;
+  j["samples"] = samples;
+  j["rays"] = rays;
+  j["render_seconds"] = renderSeconds;
+  j["samples_per_second"] = samples / std::max(renderSeconds, 1e-9);
+  j["rays_per_second"] = rays / std::max(renderSeconds, 1e-9);
+  j["samples_per_second_per_rank"] = samples / std::max(renderSeconds, 1e-9) / session.size();
+  j["nan_inf_samples_dropped"] = dropped;
+  j["collective_seconds_per_rank"] = collective;
+  j["image_mean"] = image.mean();
+  writeOutputs(settings, image, j, wallStart);
   std::fprintf(stderr, "relt: %d spp, %.2f s, %.3f M samples/s, %.2f M rays/s; wrote %s%s%s\n", passes, renderSeconds,
                samples / std::max(renderSeconds, 1e-9) * 1e-6, rays / std::max(renderSeconds, 1e-9) * 1e-6,
                settings.output.c_str(), settings.png.empty() ? "" : " and ", settings.png.c_str());

@@ -6,6 +6,7 @@ const char* integratorName(Integrator i) {
   switch (i) {
     case Integrator::PathTracing: return "pt";
     case Integrator::Bdpt: return "bdpt";
+    case Integrator::Pssmlt: return "pssmlt";
   }
   return "?";
 }
@@ -25,6 +26,10 @@ nlohmann::json RenderSettings::toJson() const {
   j["camera"] = camera;
   j["exposure"] = exposure;
   j["mis"] = heuristic == MisHeuristic::Power ? "power" : "balance";
+  if (integrator == Integrator::Pssmlt) {
+    j["mutations_per_pixel"] = mutationsPerPixel.value_or(16.0);
+    j["chains"] = chains;
+  }
   return j;
 }
 

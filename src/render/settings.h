@@ -11,7 +11,7 @@
 
 namespace relt {
 
-enum class Integrator : uint8_t { PathTracing, Bdpt };
+enum class Integrator : uint8_t { PathTracing, Bdpt, Pssmlt };
 
 struct RenderSettings {
   std::string scenePath;
@@ -27,6 +27,9 @@ struct RenderSettings {
   std::string camera;             // empty: first camera
   float exposure = 0.0f;
   MisHeuristic heuristic = MisHeuristic::Power;
+  // Markov-chain integrators.
+  std::optional<double> mutationsPerPixel;  // default 16
+  int chains = 256;
 
   nlohmann::json toJson() const;
 };

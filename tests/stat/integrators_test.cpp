@@ -13,11 +13,17 @@ using namespace relt::test;
 
 namespace {
 
+// spp doubles as mutations per pixel for the Markov-chain integrators.
 RenderSettings settingsFor(Integrator integrator, uint64_t seed, int spp, int size) {
   RenderSettings s;
   s.integrator = integrator;
   s.seed = seed;
-  s.spp = spp;
+  if (integrator == Integrator::Pssmlt) {
+    s.mutationsPerPixel = spp;
+    s.chains = 64;
+  } else {
+    s.spp = spp;
+  }
   s.width = s.height = size;
   return s;
 }
@@ -38,15 +44,15 @@ TEST_P(IntegratorTest, FurnaceMatchesAnalyticValueWithinOnePercent) {
   EXPECT_NEAR(image.mean(), expected, 0.01 * expected);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllIndependent, IntegratorTest,
-                         ::testing::Values(Integrator::PathTracing, Integrator::Bdpt),
+INSTANTIATE_TEST_SUITE_P(AllIntegrators, IntegratorTest,
+                         ::testing::Values(Integrator::PathTracing, Integrator::Bdpt, Integrator::Pssmlt),
                          [](const auto& info) { return std::string(integratorName(info.param)); });
 
-// pt and bdpt estimate the same image: the mean and four regions agree within 4 standard errors,
-// the errors coming from independent seeds (fixed, so the test is deterministic).
-TEST(IntegratorAgreement, PtAndBdptAgreeOnCornellBox) {
+// Two integrators estimate the same image: the mean and four regions agree within 4 standard
+// errors, the errors coming from independent seeds (fixed, so the test is deterministic).
+static void expectAgreementOnCornellBox(Integrator first, Integrator second, int spp) {
   const std::string path = sourcePath("scenes/cornell-box.gltf");
-  const int size = 48, spp = 16, seeds = 10;
+  const int size = 48, seeds = 10;
   struct Region {
     const char* name;
     int x0, y0, x1, y1;
@@ -57,7 +63,7 @@ TEST(IntegratorAgreement, PtAndBdptAgreeOnCornellBox) {
                             {"bottom-left", 0, size / 2, size / 2, size},
                             {"bottom-right", size / 2, size / 2, size, size}};
   std::vector<double> values[2][5];
-  const Integrator integrators[2] = {Integrator::PathTracing, Integrator::Bdpt};
+  const Integrator integrators[2] = {first, second};
   for (int i = 0; i < 2; ++i)
     for (int k = 0; k < seeds; ++k) {
       const Image image = renderInProcess(path, settingsFor(integrators[i], 1000 * (i + 1) + k, spp, size));
@@ -65,12 +71,20 @@ TEST(IntegratorAgreement, PtAndBdptAgreeOnCornellBox) {
         values[i][r].push_back(regionMean(image, regions[r].x0, regions[r].y0, regions[r].x1, regions[r].y1));
     }
   for (int r = 0; r < 5; ++r) {
-    const Estimate pt = meanAndStandardError(values[0][r]);
-    const Estimate bdpt = meanAndStandardError(values[1][r]);
-    const double sigma = std::sqrt(pt.stderror * pt.stderror + bdpt.stderror * bdpt.stderror);
-    EXPECT_GT(pt.mean, 0.0);
-    EXPECT_LT(std::abs(pt.mean - bdpt.mean), 4.0 * sigma)
-        << regions[r].name << ": pt " << pt.mean << " +- " << pt.stderror << ", bdpt " << bdpt.mean << " +- "
-        << bdpt.stderror;
+    const Estimate a = meanAndStandardError(values[0][r]);
+    const Estimate b = meanAndStandardError(values[1][r]);
+    const double sigma = std::sqrt(a.stderror * a.stderror + b.stderror * b.stderror);
+    EXPECT_GT(a.mean, 0.0);
+    EXPECT_LT(std::abs(a.mean - b.mean), 4.0 * sigma)
+        << regions[r].name << ": " << integratorName(first) << " " << a.mean << " +- " << a.stderror << ", "
+        << integratorName(second) << " " << b.mean << " +- " << b.stderror;
   }
+}
+
+TEST(IntegratorAgreement, PtAndBdptAgreeOnCornellBox) {
+  expectAgreementOnCornellBox(Integrator::PathTracing, Integrator::Bdpt, 16);
+}
+
+TEST(IntegratorAgreement, PssmltAndBdptAgreeOnCornellBox) {
+  expectAgreementOnCornellBox(Integrator::Pssmlt, Integrator::Bdpt, 16);
 }

@@ -1,0 +1,44 @@
+#pragma once
+// The path builder as a function of a point u of primary sample space: S(u) -> splats, and the
+// scalar target I(u) = luminance of their sum (DESIGN §3). The film position comes from the first
+// two numbers of the camera stream, uniform over the whole film.
+#include <vector>
+
+#include "core/sample_source.h"
+#include "path/bdpt.h"
+
+namespace relt {
+
+class PssEvaluator {
+ public:
+  PssEvaluator(const PathContext& ctx, int width, int height) : bdpt_(ctx), width_(width), height_(height) {}
+
+  // Fills `out` and returns I(u); 0 when the sample is not finite (it is then never splatted).
+  float operator()(SampleSource& u, PathSample& out);
+
+  // Splats carry this factor so that a uniform sample estimates every pixel (film area / pixel).
+  double filmArea() const { return double(width_) * height_; }
+
+ private:
+  Bdpt bdpt_;
+  int width_, height_;
+};
+
+// Independent numbers that also keeps what each stream handed out, so that a point of primary
+// sample space found by independent sampling can become a chain's state.
+class RecordingSource final : public SampleSource {
+ public:
+  explicit RecordingSource(uint64_t key) : source_(key) {}
+  float next(SampleStream stream) override {
+    const float v = source_.next(stream);
+    values_[static_cast<int>(stream)].push_back(v);
+    return v;
+  }
+  const std::vector<float>& values(SampleStream stream) const { return values_[static_cast<int>(stream)]; }
+
+ private:
+  IndependentSource source_;
+  std::vector<float> values_[kSampleStreamCount];
+};
+
+}  // namespace relt

@@ -1,0 +1,87 @@
+#include "mcmc/pssmlt.h"
+
+#include "mcmc/metropolis.h"
+
+namespace relt {
+namespace {
+constexpr uint64_t kBootstrapPurpose = 0xb007;
+constexpr uint64_t kChainPurpose = 0xc4a1;
+}  // namespace
+
+uint64_t bootstrapKey(uint64_t seed, uint64_t index) { return hashKey(seed, kBootstrapPurpose, index); }
+uint64_t chainKey(uint64_t seed, uint64_t chain) { return hashKey(seed, kChainPurpose, chain); }
+
+std::vector<double> bootstrapTargets(PssEvaluator& eval, uint64_t seed, int count, int first, int stride) {
+  std::vector<double> targets(static_cast<size_t>(count), 0.0);
+  PathSample sample;
+  for (int i = first; i < count; i += stride) {
+    IndependentSource u(bootstrapKey(seed, static_cast<uint64_t>(i)));
+    targets[static_cast<size_t>(i)] = eval(u, sample);
+  }
+  return targets;
+}
+
+uint64_t chainMutations(uint64_t total, int chains, int chain) {
+  const uint64_t n = static_cast<uint64_t>(chains);
+  return total / n + (static_cast<uint64_t>(chain) < total % n ? 1 : 0);
+}
+
+void ChainCounters::add(const ChainCounters& o) {
+  smallProposed += o.smallProposed;
+  smallAccepted += o.smallAccepted;
+  largeProposed += o.largeProposed;
+  largeAccepted += o.largeAccepted;
+  invalidProposals += o.invalidProposals;
+}
+
+PssmltChain::PssmltChain(uint64_t seed, int chain, const PssmltSettings& settings)
+    : u_(chainKey(seed, static_cast<uint64_t>(chain)), settings.sizes),
+      rng_(chainKey(seed, static_cast<uint64_t>(chain)), 1),
+      pLarge_(settings.largeStepProbability) {}
+
+void PssmltChain::start(PssEvaluator& eval, const Distribution1D& bootstrap, uint64_t seed) {
+  const size_t index = bootstrap.sample(rng_.uniform());
+  RecordingSource source(bootstrapKey(seed, index));
+  target_ = eval(source, current_);
+  for (int s = 0; s < kSampleStreamCount; ++s)
+    u_.setState(static_cast<SampleStream>(s), source.values(static_cast<SampleStream>(s)));
+}
+
+void PssmltChain::step(PssEvaluator& eval, Film& film) {
+  const bool large = rng_.uniform() < pLarge_;
+  u_.startIteration(large);
+  const float proposed = eval(u_, proposal_);
+  const float a = acceptance(target_, proposed);
+  (large ? counters_.largeProposed : counters_.smallProposed)++;
+  if (!(proposed > 0.0f)) ++counters_.invalidProposals;
+  // Expected values (thesis digest §2.7): the current state with 1 - a, the proposal with a, each
+  // over its own target (the density the chain samples it with, up to b).
+  if (target_ > 0.0f && a < 1.0f) film.addSample(current_, (1.0 - a) / target_);
+  if (a > 0.0f) film.addSample(proposal_, a / proposed);
+  if (rng_.uniform() < a) {
+    u_.accept();
+    std::swap(current_, proposal_);
+    target_ = proposed;
+    (large ? counters_.largeAccepted : counters_.smallAccepted)++;
+  } else {
+    u_.reject();
+  }
+}
+
+ChainCounters runChains(PssEvaluator& eval, const std::vector<double>& bootstrapTargets, uint64_t seed,
+                        const PssmltSettings& settings, const std::vector<int>& chains, uint64_t totalMutations,
+                        Film& film) {
+  ChainCounters total;
+  const Distribution1D bootstrap(bootstrapTargets);
+  if (bootstrap.total() <= 0.0) return total;  // nothing visible: the image stays black
+  for (int c : chains) {
+    PssmltChain chain(seed, c, settings);
+    chain.start(eval, bootstrap, seed);
+    const uint64_t n = chainMutations(totalMutations, settings.chains, c);
+    for (uint64_t i = 0; i < n; ++i) chain.step(eval, film);
+    total.add(chain.counters());
+  }
+  return total;
+}
+
+}  // namespace relt
