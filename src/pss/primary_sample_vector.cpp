@@ -1,11 +1,15 @@
 #include "pss/primary_sample_vector.h"
 
 #include <bit>
+#include <cmath>
 #include <stdexcept>
+
+#include "core/math.h"
 
 namespace relt {
 
-PrimarySampleVector::PrimarySampleVector(uint64_t key, KelemenSizes sizes) : rng_(key, 0x9551u), sizes_(sizes) {}
+PrimarySampleVector::PrimarySampleVector(uint64_t key, KelemenSizes sizes)
+    : rng_(key, 0x9551u), sizes_(sizes), step_(sizes) {}
 
 void PrimarySampleVector::startIteration(bool largeStep) {
   ++iteration_;
@@ -40,8 +44,18 @@ void PrimarySampleVector::materialise(Coordinate& c) {
     c.value = rng_.uniform();
     c.modified = lastLargeStep_;
   }
-  // Catch up on the small steps it missed, then take this iteration's.
-  for (; c.modified < iteration_; ++c.modified) c.value = kelemenSmallStep(c.value, rng_.uniform(), sizes_);
+  // Catch up on the small steps it missed, then take this iteration's. Beyond kExactSteps the sum of
+  // the steps is drawn at once from its normal limit (zero mean, n sigma^2): still symmetric, and a
+  // coordinate skipped for hundreds of iterations no longer costs hundreds of steps.
+  const uint64_t n = iteration_ - c.modified;
+  if (n > kExactSteps) {
+    const float u1 = 1.0f - rng_.uniform(), u2 = rng_.uniform();
+    const float gauss = std::sqrt(-2.0f * std::log(u1)) * std::cos(2.0f * kPi * u2);
+    c.value = wrapUnit(c.value, gauss * step_.sigma() * std::sqrt(static_cast<float>(n)));
+    c.modified = iteration_;
+    return;
+  }
+  for (; c.modified < iteration_; ++c.modified) c.value = step_(c.value, rng_.uniform());
 }
 
 float PrimarySampleVector::next(SampleStream stream) {
@@ -94,6 +108,7 @@ PrimarySampleVector PrimarySampleVector::deserialize(const std::vector<uint64_t>
   v.rng_.restore(state, inc);
   v.sizes_.s1 = std::bit_cast<float>(static_cast<uint32_t>(take()));
   v.sizes_.s2 = std::bit_cast<float>(static_cast<uint32_t>(take()));
+  v.step_ = KelemenStep(v.sizes_);
   v.iteration_ = take();
   v.lastLargeStep_ = take();
   v.previousLargeStep_ = take();

@@ -4,8 +4,8 @@
 //
 // Coordinates are materialised on first use in an iteration. Each remembers the iteration that
 // last set it; a coordinate untouched since before the last large step is redrawn uniformly, and
-// one that missed some small steps catches up by applying them, so every coordinate has the
-// distribution it would have had if it had been mutated every iteration. Values changed in an
+// one that missed some small steps catches up by applying them (up to 8 one by one, more as one
+// normal step of the same variance), so its spread is what mutating it every iteration would give. Values changed in an
 // iteration are backed up, so a rejected proposal restores the previous state exactly.
 #include <array>
 #include <cstdint>
@@ -63,11 +63,13 @@ class PrimarySampleVector final : public SampleSource {
 
   void materialise(Coordinate& c);
   static constexpr uint64_t kNeverSet = ~0ull;  // backup marker: the coordinate did not exist
+  static constexpr uint64_t kExactSteps = 8;     // missed small steps applied one by one
 
   std::array<Stream, kSampleStreamCount> streams_;
   std::vector<Backup> backup_;
   Rng rng_;
   KelemenSizes sizes_;
+  KelemenStep step_;
   uint64_t iteration_ = 0, lastLargeStep_ = 0, previousLargeStep_ = 0;
   bool largeStep_ = true;
 };
