@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # Throughput figures for docs/BENCHMARKS.md: incoherent closest-hit rays/s per core on cornell-box
-# and ring, and pt / bdpt samples/s per core on cornell-box at 256x256, max depth 8, on 1 and 2
-# ranks. Every figure is the median of REPEATS runs. Run it on an otherwise idle machine.
-# Usage: scripts/bench/throughput.sh [SPP_PT] [SPP_BDPT] [REPEATS]   (writes out/bench/throughput.txt)
+# and ring, pt / bdpt samples/s and pssmlt mutations/s per core on cornell-box at 256x256, max
+# depth 8, on 1 and 2 ranks. Every figure is the median of REPEATS runs. Run it on an otherwise
+# idle machine.
+# Usage: scripts/bench/throughput.sh [SPP_PT] [SPP_BDPT] [REPEATS] [MPP_PSSMLT]
+# (writes out/bench/throughput.txt)
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
 SPP_PT="${1:-256}"
 SPP_BDPT="${2:-64}"
 REPEATS="${3:-3}"
+MPP="${4:-32}"
 OUT="$ROOT/out/bench"
 mkdir -p "$OUT"
 
@@ -36,5 +39,13 @@ median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (
       awk -v i="$integ" -v n="$ranks" -v s="$samples" -v r="$rays" -v spp="$spp" -v k="$REPEATS" 'BEGIN {
         printf "%-4s np=%d: %5.3f M samples/s per core, %5.2f M rays/s per core (%d spp, median of %d)\n", i, n, s / 1e6, r / 1e6, spp, k}'
     done
+    stats="$OUT/pssmlt-np$ranks.json"
+    rate=$(for _ in $(seq "$REPEATS"); do
+      "${MPIRUN[@]}" -np "$ranks" "$BUILD_DIR/relt" render "$ROOT/scenes/cornell-box.gltf" -o "$OUT/pssmlt-np$ranks.exr" \
+        --integrator pssmlt --mutations-per-pixel "$MPP" --width 256 --height 256 --max-depth 8 --stats "$stats" 2>/dev/null
+      /usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['mutations_per_second_per_rank'])" "$stats"
+    done | median)
+    awk -v n="$ranks" -v r="$rate" -v m="$MPP" -v k="$REPEATS" 'BEGIN {
+      printf "pssmlt np=%d: %5.3f M mutations/s per core (%d mutations per pixel incl. 100k bootstrap, median of %d)\n", n, r / 1e6, m, k}'
   done
 } | tee "$OUT/throughput.txt"
