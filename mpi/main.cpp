@@ -28,7 +28,7 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--png", r.png, "also write an sRGB PNG preview");
   cmd.add_option("--stats", r.stats, "write settings and statistics as JSON");
   cmd.add_option("--integrator", o.integrator, "light transport algorithm")
-      ->check(CLI::IsMember({"pt", "bdpt", "pssmlt"}))
+      ->check(CLI::IsMember({"pt", "bdpt", "pssmlt", "mmlt"}))
       ->capture_default_str();
   auto* spp = cmd.add_option("--spp", r.spp, "samples per pixel (default 16)")->check(CLI::Range(1, 1 << 24));
   auto* time = cmd.add_option("--time", r.seconds, "render for this many seconds (decided collectively)")
@@ -88,13 +88,14 @@ int main(int argc, char** argv) {
       relt::checkRenderable(scene);  // a valid file that cannot be rendered is still exit 2
       return 0;
     }
-    o.render.integrator = o.integrator == "pt"     ? relt::Integrator::PathTracing
-                          : o.integrator == "bdpt" ? relt::Integrator::Bdpt
-                                                   : relt::Integrator::Pssmlt;
-    const bool chains = o.render.integrator == relt::Integrator::Pssmlt;
-    if (chains && o.render.spp) throw relt::InputError("", "--spp", "pssmlt takes --mutations-per-pixel");
+    o.render.integrator = o.integrator == "pt"       ? relt::Integrator::PathTracing
+                          : o.integrator == "bdpt"   ? relt::Integrator::Bdpt
+                          : o.integrator == "pssmlt" ? relt::Integrator::Pssmlt
+                                                     : relt::Integrator::Mmlt;
+    const bool chains = relt::isMarkovChain(o.render.integrator);
+    if (chains && o.render.spp) throw relt::InputError("", "--spp", o.integrator + " takes --mutations-per-pixel");
     if (!chains && o.render.mutationsPerPixel)
-      throw relt::InputError("", "--mutations-per-pixel", "only for the Markov-chain integrators (pssmlt)");
+      throw relt::InputError("", "--mutations-per-pixel", "only for the Markov-chain integrators (pssmlt, mmlt)");
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
     relt::mpi::runRender(session, o.render);
     return 0;

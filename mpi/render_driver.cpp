@@ -62,8 +62,11 @@ void runRender(const Session& session, RenderSettings settings) {
   checkOutputsWritable(session, settings);
 
   Film film(settings.width, settings.height);
-  if (settings.integrator == Integrator::Pssmlt) {
-    if (settings.seconds) throw InputError("", "--time", "not implemented for pssmlt yet; use --mutations-per-pixel");
+  if (isMarkovChain(settings.integrator)) {
+    if (settings.seconds)
+      throw InputError("", "--time",
+                       std::string("not implemented for ") + integratorName(settings.integrator) +
+                           " yet; use --mutations-per-pixel");
     const auto renderStart = Clock::now();
     const PssmltOutcome o = runPssmlt(session, renderer, settings, film);
     const double renderSeconds = allreduceMax(since(renderStart));
@@ -84,6 +87,17 @@ void runRender(const Session& session, RenderSettings settings) {
     j["acceptance_small"] = o.counters.smallProposed ? double(o.counters.smallAccepted) / o.counters.smallProposed : 0.0;
     j["acceptance_large"] = o.counters.largeProposed ? double(o.counters.largeAccepted) / o.counters.largeProposed : 0.0;
     j["invalid_proposals"] = o.counters.invalidProposals;
+    if (!o.perDepth.empty()) {
+      nlohmann::json depths = nlohmann::json::array();
+      for (size_t d = 0; d < o.perDepth.size(); ++d) {
+        const ChainCounters& c = o.perDepth[d];
+        const uint64_t proposed = c.smallProposed + c.largeProposed;
+        depths.push_back({{"depth", d + 1},
+                          {"mutations", proposed},
+                          {"acceptance", proposed ? double(c.smallAccepted + c.largeAccepted) / proposed : 0.0}});
+      }
+      j["per_depth"] = depths;
+    }
     j["rays"] = rays;
     j["render_seconds"] = renderSeconds;
     j["mutations_per_second"] = mutations / std::max(renderSeconds, 1e-9);

@@ -32,27 +32,23 @@ void ChainCounters::add(const ChainCounters& o) {
   largeProposed += o.largeProposed;
   largeAccepted += o.largeAccepted;
   invalidProposals += o.invalidProposals;
+  largeTargetSum += o.largeTargetSum;
 }
 
-PssmltChain::PssmltChain(uint64_t seed, int chain, const PssmltSettings& settings)
+double pooledNormaliser(double bootstrapSum, uint64_t bootstrapCount, const ChainCounters& chains) {
+  const double n = double(bootstrapCount) + double(chains.largeProposed);
+  return n > 0.0 ? (bootstrapSum + chains.largeTargetSum) / n : 0.0;
+}
+
+McmcChain::McmcChain(uint64_t seed, int chain, const PssmltSettings& settings)
     : u_(chainKey(seed, static_cast<uint64_t>(chain)), settings.sizes),
       rng_(chainKey(seed, static_cast<uint64_t>(chain)), 1),
       pLarge_(settings.largeStepProbability) {}
 
-void PssmltChain::start(PssEvaluator& eval, const Distribution1D& bootstrap, uint64_t seed) {
-  const size_t index = bootstrap.sample(rng_.uniform());
-  RecordingSource source(bootstrapKey(seed, index));
-  target_ = eval(source, current_);
-  for (int s = 0; s < kSampleStreamCount; ++s)
-    u_.setState(static_cast<SampleStream>(s), source.values(static_cast<SampleStream>(s)));
-}
-
-void PssmltChain::step(PssEvaluator& eval, Film& film) {
-  const bool large = rng_.uniform() < pLarge_;
-  u_.startIteration(large);
-  const float proposed = eval(u_, proposal_);
+void McmcChain::finishStep(bool large, float proposed, Film& film) {
   const float a = acceptance(target_, proposed);
   (large ? counters_.largeProposed : counters_.smallProposed)++;
+  if (large) counters_.largeTargetSum += proposed;
   if (!(proposed > 0.0f)) ++counters_.invalidProposals;
   // Expected values (thesis digest §2.7): the current state with 1 - a, the proposal with a, each
   // over its own target (the density the chain samples it with, up to b).
@@ -75,8 +71,8 @@ ChainCounters runChains(PssEvaluator& eval, const std::vector<double>& bootstrap
   const Distribution1D bootstrap(bootstrapTargets);
   if (bootstrap.total() <= 0.0) return total;  // nothing visible: the image stays black
   for (int c : chains) {
-    PssmltChain chain(seed, c, settings);
-    chain.start(eval, bootstrap, seed);
+    McmcChain chain(seed, c, settings);
+    chain.start(eval, bootstrapKey(seed, chain.pickBootstrap(bootstrap)));
     const uint64_t n = chainMutations(totalMutations, settings.chains, c);
     for (uint64_t i = 0; i < n; ++i) chain.step(eval, film);
     total.add(chain.counters());

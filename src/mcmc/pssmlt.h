@@ -38,23 +38,34 @@ uint64_t chainMutations(uint64_t total, int chains, int chain);
 struct ChainCounters {
   uint64_t smallProposed = 0, smallAccepted = 0, largeProposed = 0, largeAccepted = 0;
   uint64_t invalidProposals = 0;  // zero or non-finite target: rejected, never splatted
+  // Large steps are independent uniform samples: their targets refine the normaliser b
+  // (thesis digest §2.6, Eq. 6.4).
+  double largeTargetSum = 0.0;
   void add(const ChainCounters& o);
 };
 
-class PssmltChain {
+// One Metropolis-Hastings chain on a point of primary sample space. `Eval` is any callable
+// (SampleSource&, PathSample&) -> target, e.g. PssEvaluator or MMLT's fixed-length evaluator.
+class McmcChain {
  public:
-  PssmltChain(uint64_t seed, int chain, const PssmltSettings& settings);
+  McmcChain(uint64_t seed, int chain, const PssmltSettings& settings);
 
-  // Picks the starting bootstrap sample in proportion to its target and regenerates it.
-  void start(PssEvaluator& eval, const Distribution1D& bootstrap, uint64_t seed);
-  // One Metropolis-Hastings step. Both states are splatted with their expected-value weights
-  // divided by their target; the film then needs the factor b * filmArea / (total mutations).
-  void step(PssEvaluator& eval, Film& film);
+  // Picks a bootstrap sample in proportion to its target (start-up bias elimination).
+  size_t pickBootstrap(const Distribution1D& bootstrap) { return bootstrap.sample(rng_.uniform()); }
+  // Starts at the point an independent source with `key` produces (a regenerated bootstrap sample).
+  template <class Eval>
+  void start(Eval&& eval, uint64_t key);
+  // One step. Both states are splatted with their expected-value weights divided by their target;
+  // the film then needs the factor b * filmArea / (total mutations).
+  template <class Eval>
+  void step(Eval&& eval, Film& film);
 
   const ChainCounters& counters() const { return counters_; }
   float target() const { return target_; }
 
  private:
+  void finishStep(bool large, float proposed, Film& film);
+
   PrimarySampleVector u_;
   Rng rng_;
   float pLarge_;
@@ -62,6 +73,24 @@ class PssmltChain {
   float target_ = 0.0f;
   ChainCounters counters_;
 };
+
+template <class Eval>
+void McmcChain::start(Eval&& eval, uint64_t key) {
+  RecordingSource source(key);
+  target_ = eval(source, current_);
+  for (int s = 0; s < kSampleStreamCount; ++s)
+    u_.setState(static_cast<SampleStream>(s), source.values(static_cast<SampleStream>(s)));
+}
+
+template <class Eval>
+void McmcChain::step(Eval&& eval, Film& film) {
+  const bool large = rng_.uniform() < pLarge_;
+  u_.startIteration(large);
+  finishStep(large, eval(u_, proposal_), film);
+}
+
+// b from the bootstrap targets and the large steps together (both are uniform samples of I).
+double pooledNormaliser(double bootstrapSum, uint64_t bootstrapCount, const ChainCounters& chains);
 
 // Film sums -> pixels: pixel = b * film area / N * sums, written as the divisor Renderer::resolve
 // takes (its "samples per pixel"); 0 (black) when nothing was visible.

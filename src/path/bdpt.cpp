@@ -25,14 +25,15 @@ float remap0(float pdf) { return pdf != 0.0f ? pdf : 1.0f; }
 
 // Area density with which vertex `from`, reached from direction `arrive` (unit, towards the vertex
 // before it in the generating direction), generates vertex `to`.
-float pdfGenerate(const PathContext& ctx, const PathVertex& from, const Vec3& arrive, const PathVertex& to) {
+float pdfGenerate(const PathContext& ctx, const PathVertex& from, const Vec3& arrive, const PathVertex& to,
+                  bool roulette) {
   const Vec3 w = glm::normalize(to.sp.p - from.sp.p);
   float pdfW = 0.0f;
   switch (from.type) {
     case PathVertex::Type::Camera: pdfW = ctx.camera.pdfDirection(w); break;
     case PathVertex::Type::Light: pdfW = ctx.lights.pdfDirection(from.light, from.sp, w); break;
     case PathVertex::Type::Surface:
-      pdfW = from.bsdf->pdf(arrive, w) * continuationProbability(from.bsdf->material());
+      pdfW = from.bsdf->pdf(arrive, w) * (roulette ? continuationProbability(from.bsdf->material()) : 1.0f);
       break;
   }
   return solidAngleToArea(pdfW, from, to);
@@ -74,10 +75,10 @@ void Bdpt::randomWalk(Ray ray, Color beta, TransportMode mode, size_t maxVertice
       v.sp = hit;
       v.wo = glm::normalize(prev.sp.p - hit.p);
       v.beta = beta;
-      v.pdfFwd = pdfGenerate(ctx_, prev, prev.wo, v);
+      v.pdfFwd = pdfGenerate(ctx_, prev, prev.wo, v, roulette_);
       if (path.size() >= 2) {
         PathVertex& prevPrev = path[path.size() - 2];
-        prevPrev.pdfRev = pdfGenerate(ctx_, prev, -v.wo, prevPrev);
+        prevPrev.pdfRev = pdfGenerate(ctx_, prev, -v.wo, prevPrev, roulette_);
       }
       v.bsdf.emplace(ctx_.scene.materials[hit.material], hit.ns, hit.ng);
       v.delta = v.bsdf->isDelta();
@@ -90,7 +91,7 @@ void Bdpt::randomWalk(Ray ray, Color beta, TransportMode mode, size_t maxVertice
     const float uRR = source.next(stream);
     const auto bs = cur.bsdf->sample(cur.wo, u, uLobe, mode);
     if (!bs || !(bs->pdf > 0.0f)) return;
-    const float q = continuationProbability(cur.bsdf->material());
+    const float q = roulette_ ? continuationProbability(cur.bsdf->material()) : 1.0f;
     if (!(uRR < q)) return;
     float scale = std::abs(glm::dot(cur.sp.ns, bs->wi)) / (bs->pdf * q);
     if (mode == TransportMode::Importance) scale *= shadingCorrection(cur.sp, cur.wo, bs->wi);
@@ -100,7 +101,7 @@ void Bdpt::randomWalk(Ray ray, Color beta, TransportMode mode, size_t maxVertice
   }
 }
 
-void Bdpt::generateCameraSubpath(const Vec2& film, SampleSource& source) {
+void Bdpt::generateCameraSubpath(const Vec2& film, SampleSource& source, size_t maxVertices) {
   camera_.clear();
   PathVertex c;
   c.type = PathVertex::Type::Camera;
@@ -109,11 +110,11 @@ void Bdpt::generateCameraSubpath(const Vec2& film, SampleSource& source) {
   c.pdfFwd = 1.0f;
   camera_.push_back(c);
   const Vec3 dir = ctx_.camera.direction(film);
-  randomWalk(Ray{c.sp.p, dir, INFINITY}, Color(1.0f), TransportMode::Radiance,
-             static_cast<size_t>(ctx_.settings.maxDepth) + 1, source, SampleStream::Camera, camera_);
+  randomWalk(Ray{c.sp.p, dir, INFINITY}, Color(1.0f), TransportMode::Radiance, maxVertices, source,
+             SampleStream::Camera, camera_);
 }
 
-void Bdpt::generateLightSubpath(SampleSource& source) {
+void Bdpt::generateLightSubpath(SampleSource& source, size_t maxVertices) {
   light_.clear();
   const float uPick = source.next(SampleStream::Light);
   const Vec2 uPos = source.next2(SampleStream::Light);
@@ -128,13 +129,13 @@ void Bdpt::generateLightSubpath(SampleSource& source) {
   if (isBlack(le)) return;
   const Color beta = le * (cosAt(l, em.dir) / (l.pdfFwd * em.pdfDir));
   const Vec3 origin = lp.delta ? lp.sp.p : ctx_.tracer.offsetOrigin(lp.sp.p, lp.sp.ng, em.dir);
-  randomWalk(Ray{origin, em.dir, INFINITY}, beta, TransportMode::Importance,
-             static_cast<size_t>(ctx_.settings.maxDepth), source, SampleStream::Light, light_);
+  randomWalk(Ray{origin, em.dir, INFINITY}, beta, TransportMode::Importance, maxVertices, source,
+             SampleStream::Light, light_);
 }
 
 void Bdpt::trace(const Vec2& film, SampleSource& source, PathSample& out) {
-  generateCameraSubpath(film, source);
-  generateLightSubpath(source);
+  generateCameraSubpath(film, source, static_cast<size_t>(ctx_.settings.maxDepth) + 1);
+  generateLightSubpath(source, static_cast<size_t>(ctx_.settings.maxDepth));
   const int maxDepth = ctx_.settings.maxDepth;
   for (int t = 1; t <= static_cast<int>(camera_.size()); ++t)
     for (int s = 0; s <= static_cast<int>(light_.size()); ++s) {
@@ -143,6 +144,20 @@ void Bdpt::trace(const Vec2& film, SampleSource& source, PathSample& out) {
       if (segments < 1 || segments > maxDepth || (s == 1 && t == 1)) continue;
       connect(s, t, film, source, out);
     }
+}
+
+bool Bdpt::traceStrategy(int s, int t, const Vec2& film, SampleSource& source, PathSample& out) {
+  if (t < 1 || s < 0 || (s == 1 && t == 1) || s + t - 1 < 1) return false;
+  generateCameraSubpath(film, source, static_cast<size_t>(t));
+  if (static_cast<int>(camera_.size()) < t) return false;
+  light_.clear();
+  if (s > 0) {
+    generateLightSubpath(source, static_cast<size_t>(s));
+    if (static_cast<int>(light_.size()) < s) return false;
+  }
+  const size_t before = out.splats.size();
+  connect(s, t, film, source, out);
+  return out.splats.size() > before;
 }
 
 void Bdpt::connect(int s, int t, const Vec2& film, SampleSource& source, PathSample& out) {
@@ -237,10 +252,10 @@ float Bdpt::misWeight(std::span<PathVertex> light, std::span<PathVertex> camera)
   // Densities that change because the subpaths are now joined (the four vertices at the seam).
   if (ls) {
     const Vec3 toLs = glm::normalize(ls->sp.p - ct.sp.p);
-    fromCamera[s - 1] = pdfGenerate(ctx_, ct, ct.wo, *ls);
-    if (lsPrev) fromCamera[s - 2] = pdfGenerate(ctx_, *ls, -toLs, *lsPrev);
-    fromLight[s] = pdfGenerate(ctx_, *ls, ls->wo, ct);
-    if (ctPrev) fromLight[s + 1] = pdfGenerate(ctx_, ct, toLs, *ctPrev);
+    fromCamera[s - 1] = pdfGenerate(ctx_, ct, ct.wo, *ls, roulette_);
+    if (lsPrev) fromCamera[s - 2] = pdfGenerate(ctx_, *ls, -toLs, *lsPrev, roulette_);
+    fromLight[s] = pdfGenerate(ctx_, *ls, ls->wo, ct, roulette_);
+    if (ctPrev) fromLight[s + 1] = pdfGenerate(ctx_, ct, toLs, *ctPrev, roulette_);
   } else {
     // s = 0: the camera subpath ended on an emitter; the light end would have chosen it by power.
     const uint32_t tri = ct.sp.triangle;

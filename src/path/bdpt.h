@@ -20,10 +20,15 @@ using ConnectionObserver = std::function<void(std::span<const PathVertex> light,
 
 class Bdpt {
  public:
-  explicit Bdpt(const PathContext& ctx) : ctx_(ctx) {}
+  // roulette = false: subpaths continue until they leave the scene or reach their length (MMLT
+  // needs subpaths of an exact length); the densities then carry no continuation probability.
+  explicit Bdpt(const PathContext& ctx, bool roulette = true) : ctx_(ctx), roulette_(roulette) {}
 
   // Traces one camera subpath through `film` and one light subpath, connects them in every way.
   void trace(const Vec2& film, SampleSource& source, PathSample& out);
+  // One strategy only: a camera subpath of exactly t vertices and a light subpath of exactly s,
+  // connected (multiplexed MLT). False if a subpath ended early or the connection gave nothing.
+  bool traceStrategy(int s, int t, const Vec2& film, SampleSource& source, PathSample& out);
   void setObserver(ConnectionObserver observer) { observer_ = std::move(observer); }
 
   // MIS weight of strategy (s, t) for the given subpaths (densities at the connection updated
@@ -33,11 +38,12 @@ class Bdpt {
  private:
   void randomWalk(Ray ray, Color beta, TransportMode mode, size_t maxVertices, SampleSource& source,
                   SampleStream stream, std::vector<PathVertex>& path) const;
-  void generateCameraSubpath(const Vec2& film, SampleSource& source);
-  void generateLightSubpath(SampleSource& source);
+  void generateCameraSubpath(const Vec2& film, SampleSource& source, size_t maxVertices);
+  void generateLightSubpath(SampleSource& source, size_t maxVertices);
   void connect(int s, int t, const Vec2& film, SampleSource& source, PathSample& out);
 
   const PathContext& ctx_;
+  bool roulette_ = true;
   std::vector<PathVertex> camera_, light_;
   ConnectionObserver observer_;
 };

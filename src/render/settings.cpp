@@ -7,6 +7,7 @@ const char* integratorName(Integrator i) {
     case Integrator::PathTracing: return "pt";
     case Integrator::Bdpt: return "bdpt";
     case Integrator::Pssmlt: return "pssmlt";
+    case Integrator::Mmlt: return "mmlt";
   }
   return "?";
 }
@@ -26,7 +27,7 @@ nlohmann::json RenderSettings::toJson() const {
   j["camera"] = camera;
   j["exposure"] = exposure;
   j["mis"] = heuristic == MisHeuristic::Power ? "power" : "balance";
-  if (integrator == Integrator::Pssmlt) {
+  if (isMarkovChain(integrator)) {
     j["mutations_per_pixel"] = mutationsPerPixel.value_or(16.0);
     j["chains"] = chains;
   }

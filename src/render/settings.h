@@ -11,7 +11,9 @@
 
 namespace relt {
 
-enum class Integrator : uint8_t { PathTracing, Bdpt, Pssmlt };
+enum class Integrator : uint8_t { PathTracing, Bdpt, Pssmlt, Mmlt };
+
+inline bool isMarkovChain(Integrator i) { return i == Integrator::Pssmlt || i == Integrator::Mmlt; }
 
 struct RenderSettings {
   std::string scenePath;

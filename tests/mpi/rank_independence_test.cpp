@@ -53,6 +53,12 @@ TEST(RankIndependence, PssmltImageIsTheSameOnOneAndTwoRanks) {
   expectSameImage(renderWithRanks(1, "pssmlt", dir, amount), renderWithRanks(2, "pssmlt", dir, amount));
 }
 
+TEST(RankIndependence, MmltImageIsTheSameOnOneAndTwoRanks) {
+  const std::string dir = makeTempDir("mpi-mmlt");
+  const std::string amount = "--mutations-per-pixel 8 --chains 9";
+  expectSameImage(renderWithRanks(1, "mmlt", dir, amount), renderWithRanks(2, "mmlt", dir, amount));
+}
+
 TEST(RankIndependence, TimedRenderStopsEveryRankAtTheSamePass) {
   const std::string dir = makeTempDir("mpi-time");
   const CommandResult r = runCommand(mpirun(2) + reltBinary() + " render " + sourcePath("scenes/cornell-box.gltf") +

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "mcmc/mmlt.h"
 #include "mcmc/pssmlt.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
@@ -13,21 +14,30 @@ Image renderInProcess(const std::string& scene, RenderSettings settings) {
   Renderer renderer(loadGltf(scene), settings);
   const RenderSettings& s = renderer.settings();
   Film film(s.width, s.height);
-  if (s.integrator == Integrator::Pssmlt) {
+  if (isMarkovChain(s.integrator)) {
     // One process plays every rank: all bootstrap samples, all chains (as mpi/pssmlt_driver does).
     PssmltSettings ps;
     ps.mutationsPerPixel = s.mutationsPerPixel.value_or(16.0);
     ps.chains = s.chains;
-    PssEvaluator eval(renderer.context(), s.width, s.height);
-    const std::vector<double> targets = bootstrapTargets(eval, s.seed, ps.bootstrap, 0, 1);
-    double sum = 0.0;
-    for (double t : targets) sum += t;
     const double area = double(s.width) * s.height;
     const auto total = static_cast<uint64_t>(std::llround(ps.mutationsPerPixel * area));
     std::vector<int> chains(static_cast<size_t>(ps.chains));
     for (int c = 0; c < ps.chains; ++c) chains[static_cast<size_t>(c)] = c;
-    runChains(eval, targets, s.seed, ps, chains, total, film);
-    return Renderer::resolve(film, film.data(), pssmltResolveDivisor(total, sum / targets.size(), area));
+    if (s.integrator == Integrator::Mmlt) {
+      MmltEvaluator mmlt(renderer.context(), s.width, s.height);
+      const std::vector<double> mt = mmltBootstrapTargets(mmlt, s.seed, ps.bootstrap, 0, 1);
+      std::vector<ChainCounters> perDepth;
+      runMmltChains(mmlt, mt, s.seed, ps, chains, total, film, &perDepth);
+      const double b = mmltNormaliser(mt, s.maxDepth, perDepth);
+      return Renderer::resolve(film, film.data(), pssmltResolveDivisor(total, b, area));
+    }
+    PssEvaluator eval(renderer.context(), s.width, s.height);
+    const std::vector<double> targets = bootstrapTargets(eval, s.seed, ps.bootstrap, 0, 1);
+    double sum = 0.0;
+    for (double t : targets) sum += t;
+    const ChainCounters counters = runChains(eval, targets, s.seed, ps, chains, total, film);
+    const double b = pooledNormaliser(sum, targets.size(), counters);
+    return Renderer::resolve(film, film.data(), pssmltResolveDivisor(total, b, area));
   }
   const int spp = s.spp.value_or(16);
   for (int k = 0; k < spp; ++k)

@@ -1,0 +1,64 @@
+#include "mcmc/mmlt.h"
+
+#include <algorithm>
+
+namespace relt {
+
+float MmltEvaluator::operator()(int depth, SampleSource& u, PathSample& out) {
+  out.clear();
+  const int n = mmltStrategies(depth);
+  const int pick = std::min(n - 1, static_cast<int>(u.next(SampleStream::Connection) * n));
+  const int t = depth == 1 ? 2 : pick + 1;
+  const int s = depth + 1 - t;
+  const float x = u.next(SampleStream::Camera), y = u.next(SampleStream::Camera);
+  if (!bdpt_.traceStrategy(s, t, Vec2(x * width_, y * height_), u, out)) return 0.0f;
+  for (Splat& sp : out.splats) sp.value *= static_cast<float>(n);
+  const float target = out.luminanceSum();
+  return std::isfinite(target) && out.finite() ? target : 0.0f;
+}
+
+std::vector<double> mmltBootstrapTargets(MmltEvaluator& eval, uint64_t seed, int count, int first, int stride) {
+  std::vector<double> targets(static_cast<size_t>(count), 0.0);
+  PathSample sample;
+  for (int i = first; i < count; i += stride) {
+    IndependentSource u(bootstrapKey(seed, static_cast<uint64_t>(i)));
+    targets[static_cast<size_t>(i)] = eval(mmltDepthOfBootstrap(static_cast<uint64_t>(i), eval.maxDepth()), u, sample);
+  }
+  return targets;
+}
+
+double mmltNormaliser(const std::vector<double>& targets, int maxDepth, const std::vector<ChainCounters>& perDepth) {
+  std::vector<double> sum(static_cast<size_t>(maxDepth), 0.0), count(static_cast<size_t>(maxDepth), 0.0);
+  for (size_t i = 0; i < targets.size(); ++i) {
+    const size_t d = static_cast<size_t>(mmltDepthOfBootstrap(i, maxDepth) - 1);
+    sum[d] += targets[i];
+    count[d] += 1.0;
+  }
+  double b = 0.0;
+  for (size_t d = 0; d < sum.size(); ++d)
+    b += pooledNormaliser(sum[d], static_cast<uint64_t>(count[d]), d < perDepth.size() ? perDepth[d] : ChainCounters{});
+  return b;
+}
+
+ChainCounters runMmltChains(MmltEvaluator& eval, const std::vector<double>& bootstrapTargets, uint64_t seed,
+                            const PssmltSettings& settings, const std::vector<int>& chains, uint64_t totalMutations,
+                            Film& film, std::vector<ChainCounters>* perDepth) {
+  ChainCounters total;
+  if (perDepth) perDepth->assign(static_cast<size_t>(eval.maxDepth()), ChainCounters{});
+  const Distribution1D bootstrap(bootstrapTargets);
+  if (bootstrap.total() <= 0.0) return total;
+  for (int c : chains) {
+    McmcChain chain(seed, c, settings);
+    const size_t index = chain.pickBootstrap(bootstrap);
+    const int depth = mmltDepthOfBootstrap(index, eval.maxDepth());
+    auto atDepth = [&](SampleSource& u, PathSample& out) { return eval(depth, u, out); };
+    chain.start(atDepth, bootstrapKey(seed, index));
+    const uint64_t n = chainMutations(totalMutations, settings.chains, c);
+    for (uint64_t i = 0; i < n; ++i) chain.step(atDepth, film);
+    total.add(chain.counters());
+    if (perDepth) (*perDepth)[static_cast<size_t>(depth - 1)].add(chain.counters());
+  }
+  return total;
+}
+
+}  // namespace relt
