@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Throughput figures for docs/BENCHMARKS.md: incoherent closest-hit rays/s per core on cornell-box
-# and ring, pt / bdpt samples/s and pssmlt mutations/s per core on cornell-box at 256x256, max
+# and ring, pt / bdpt samples/s and pssmlt / mmlt mutations/s per core on cornell-box at 256x256, max
 # depth 8, on 1 and 2 ranks. Every figure is the median of REPEATS runs. Run it on an otherwise
 # idle machine.
-# Usage: scripts/bench/throughput.sh [SPP_PT] [SPP_BDPT] [REPEATS] [MPP_PSSMLT]
+# Usage: scripts/bench/throughput.sh [SPP_PT] [SPP_BDPT] [REPEATS] [MPP_PSSMLT]   (mmlt: 4 x MPP_PSSMLT)
 # (writes out/bench/throughput.txt)
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
@@ -39,13 +39,17 @@ median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (
       awk -v i="$integ" -v n="$ranks" -v s="$samples" -v r="$rays" -v spp="$spp" -v k="$REPEATS" 'BEGIN {
         printf "%-4s np=%d: %5.3f M samples/s per core, %5.2f M rays/s per core (%d spp, median of %d)\n", i, n, s / 1e6, r / 1e6, spp, k}'
     done
-    stats="$OUT/pssmlt-np$ranks.json"
-    rate=$(for _ in $(seq "$REPEATS"); do
-      "${MPIRUN[@]}" -np "$ranks" "$BUILD_DIR/relt" render "$ROOT/scenes/cornell-box.gltf" -o "$OUT/pssmlt-np$ranks.exr" \
-        --integrator pssmlt --mutations-per-pixel "$MPP" --width 256 --height 256 --max-depth 8 --stats "$stats" 2>/dev/null
-      /usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['mutations_per_second_per_rank'])" "$stats"
-    done | median)
-    awk -v n="$ranks" -v r="$rate" -v m="$MPP" -v k="$REPEATS" 'BEGIN {
-      printf "pssmlt np=%d: %5.3f M mutations/s per core (%d mutations per pixel incl. 100k bootstrap, median of %d)\n", n, r / 1e6, m, k}'
+    for integ in pssmlt mmlt; do
+      mpp=$MPP
+      [ "$integ" = mmlt ] && mpp=$((MPP * 4))
+      stats="$OUT/$integ-np$ranks.json"
+      rate=$(for _ in $(seq "$REPEATS"); do
+        "${MPIRUN[@]}" -np "$ranks" "$BUILD_DIR/relt" render "$ROOT/scenes/cornell-box.gltf" -o "$OUT/$integ-np$ranks.exr" \
+          --integrator "$integ" --mutations-per-pixel "$mpp" --width 256 --height 256 --max-depth 8 --stats "$stats" 2>/dev/null
+        /usr/bin/python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['mutations_per_second_per_rank'])" "$stats"
+      done | median)
+      awk -v i="$integ" -v n="$ranks" -v r="$rate" -v m="$mpp" -v k="$REPEATS" 'BEGIN {
+        printf "%-6s np=%d: %5.3f M mutations/s per core (%d mutations per pixel, 100k bootstrap included, median of %d)\n", i, n, r / 1e6, m, k}'
+    done
   done
 } | tee "$OUT/throughput.txt"
