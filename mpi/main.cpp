@@ -28,7 +28,7 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--png", r.png, "also write an sRGB PNG preview");
   cmd.add_option("--stats", r.stats, "write settings and statistics as JSON");
   cmd.add_option("--integrator", o.integrator, "light transport algorithm")
-      ->check(CLI::IsMember({"pt", "bdpt", "pssmlt", "mmlt"}))
+      ->check(CLI::IsMember({"pt", "bdpt", "pssmlt", "mmlt", "erpt"}))
       ->capture_default_str();
   auto* spp = cmd.add_option("--spp", r.spp, "samples per pixel (default 16)")->check(CLI::Range(1, 1 << 24));
   auto* time = cmd.add_option("--time", r.seconds, "render for this many seconds (decided collectively)")
@@ -40,6 +40,9 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   mpp->excludes(spp);
   mpp->excludes(time);
   cmd.add_option("--chains", r.chains, "Markov-chain integrators: number of chains (independent of the rank count)")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  cmd.add_option("--chain-length", r.chainLength, "erpt: mutations per energy-redistribution chain")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
   cmd.add_option("--width", r.width, "image width (default: scene extras, else 256)")->check(CLI::Range(1, 16384));
@@ -91,11 +94,14 @@ int main(int argc, char** argv) {
     o.render.integrator = o.integrator == "pt"       ? relt::Integrator::PathTracing
                           : o.integrator == "bdpt"   ? relt::Integrator::Bdpt
                           : o.integrator == "pssmlt" ? relt::Integrator::Pssmlt
-                                                     : relt::Integrator::Mmlt;
+                          : o.integrator == "mmlt"   ? relt::Integrator::Mmlt
+                                                     : relt::Integrator::Erpt;
     const bool chains = relt::isMarkovChain(o.render.integrator);
     if (chains && o.render.spp) throw relt::InputError("", "--spp", o.integrator + " takes --mutations-per-pixel");
     if (!chains && o.render.mutationsPerPixel)
       throw relt::InputError("", "--mutations-per-pixel", "only for the Markov-chain integrators (pssmlt, mmlt)");
+    if (o.render.integrator == relt::Integrator::Erpt && o.render.seconds)
+      throw relt::InputError("", "--time", "not implemented for erpt yet; use --spp (seeds per pixel)");
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
     relt::mpi::runRender(session, o.render);
     return 0;

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "render/renderer.h"
+#include "erpt_driver.h"
 #include "pssmlt_driver.h"
 #include "render/schedule.h"
 #include "scene/gltf_loader.h"
@@ -110,6 +111,40 @@ void runRender(const Session& session, RenderSettings settings) {
     std::fprintf(stderr, "relt: %llu mutations, %.2f s, %.3f M mutations/s; wrote %s\n",
                  static_cast<unsigned long long>(mutations), renderSeconds,
                  mutations / std::max(renderSeconds, 1e-9) * 1e-6, settings.output.c_str());
+    return;
+  }
+  if (settings.integrator == Integrator::Erpt) {
+    const auto renderStart = Clock::now();
+    const ErptOutcome o = runErpt(session, renderer, settings, film);
+    const double renderSeconds = allreduceMax(since(renderStart));
+    reduceSumToRoot(film.data());
+    const uint64_t rays = allreduceSum(renderer.rays());
+    const uint64_t dropped = allreduceSum(film.droppedSamples());
+    const std::vector<double> collective = allgather(collectiveSeconds());
+    if (!session.isRoot()) return;
+    const Image image = Renderer::resolve(film, film.data(), o.seedsPerPixel);
+    nlohmann::json j;
+    j["settings"] = settings.toJson();
+    j["ranks"] = session.size();
+    j["spp"] = o.seedsPerPixel;
+    j["seeds"] = o.counters.seeds;
+    j["chains"] = o.counters.chains;
+    j["mutations"] = o.counters.mutations;
+    j["acceptance"] = o.counters.mutations ? double(o.counters.accepted) / o.counters.mutations : 0.0;
+    j["invalid_proposals"] = o.counters.invalidProposals;
+    j["normaliser"] = o.normaliser;
+    j["rays"] = rays;
+    j["render_seconds"] = renderSeconds;
+    j["mutations_per_second"] = o.counters.mutations / std::max(renderSeconds, 1e-9);
+    j["mutations_per_second_per_rank"] = o.counters.mutations / std::max(renderSeconds, 1e-9) / session.size();
+    j["rays_per_second"] = rays / std::max(renderSeconds, 1e-9);
+    j["nan_inf_samples_dropped"] = dropped;
+    j["collective_seconds_per_rank"] = collective;
+    j["image_mean"] = image.mean();
+    writeOutputs(settings, image, j, wallStart);
+    std::fprintf(stderr, "relt: %llu seeds, %llu chains, %llu mutations, %.2f s; wrote %s\n",
+                 static_cast<unsigned long long>(o.counters.seeds), static_cast<unsigned long long>(o.counters.chains),
+                 static_cast<unsigned long long>(o.counters.mutations), renderSeconds, settings.output.c_str());
     return;
   }
   const int height = settings.height;

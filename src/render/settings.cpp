@@ -8,6 +8,7 @@ const char* integratorName(Integrator i) {
     case Integrator::Bdpt: return "bdpt";
     case Integrator::Pssmlt: return "pssmlt";
     case Integrator::Mmlt: return "mmlt";
+    case Integrator::Erpt: return "erpt";
   }
   return "?";
 }
@@ -27,6 +28,7 @@ nlohmann::json RenderSettings::toJson() const {
   j["camera"] = camera;
   j["exposure"] = exposure;
   j["mis"] = heuristic == MisHeuristic::Power ? "power" : "balance";
+  if (integrator == Integrator::Erpt) j["chain_length"] = chainLength;
   if (isMarkovChain(integrator)) {
     j["mutations_per_pixel"] = mutationsPerPixel.value_or(16.0);
     j["chains"] = chains;

@@ -11,7 +11,7 @@
 
 namespace relt {
 
-enum class Integrator : uint8_t { PathTracing, Bdpt, Pssmlt, Mmlt };
+enum class Integrator : uint8_t { PathTracing, Bdpt, Pssmlt, Mmlt, Erpt };
 
 inline bool isMarkovChain(Integrator i) { return i == Integrator::Pssmlt || i == Integrator::Mmlt; }
 
@@ -32,6 +32,7 @@ struct RenderSettings {
   // Markov-chain integrators.
   std::optional<double> mutationsPerPixel;  // default 16
   int chains = 256;
+  int chainLength = 100;  // erpt: mutations per chain (m)
 
   nlohmann::json toJson() const;
 };

@@ -59,6 +59,12 @@ TEST(RankIndependence, MmltImageIsTheSameOnOneAndTwoRanks) {
   expectSameImage(renderWithRanks(1, "mmlt", dir, amount), renderWithRanks(2, "mmlt", dir, amount));
 }
 
+TEST(RankIndependence, ErptImageIsTheSameOnOneAndTwoRanks) {
+  const std::string dir = makeTempDir("mpi-erpt");
+  expectSameImage(renderWithRanks(1, "erpt", dir, "--spp 1 --chain-length 10"),
+                  renderWithRanks(2, "erpt", dir, "--spp 1 --chain-length 10"));
+}
+
 TEST(RankIndependence, TimedRenderStopsEveryRankAtTheSamePass) {
   const std::string dir = makeTempDir("mpi-time");
   const CommandResult r = runCommand(mpirun(2) + reltBinary() + " render " + sourcePath("scenes/cornell-box.gltf") +

@@ -48,7 +48,7 @@ TEST_P(IntegratorTest, FurnaceMatchesAnalyticValueWithinOnePercent) {
 
 INSTANTIATE_TEST_SUITE_P(AllIntegrators, IntegratorTest,
                          ::testing::Values(Integrator::PathTracing, Integrator::Bdpt, Integrator::Pssmlt,
-                                           Integrator::Mmlt),
+                                           Integrator::Mmlt, Integrator::Erpt),
                          [](const auto& info) { return std::string(integratorName(info.param)); });
 
 // Two integrators estimate the same image: the mean and four regions agree within 4 standard
@@ -92,6 +92,11 @@ TEST(IntegratorAgreement, PtAndBdptAgreeOnCornellBox) {
 
 TEST(IntegratorAgreement, PssmltAndBdptAgreeOnCornellBox) {
   expectAgreementOnCornellBox(Integrator::Pssmlt, Integrator::Bdpt, 16, 20);
+}
+
+TEST(IntegratorAgreement, ErptAndBdptAgreeOnCornellBox) {
+  // erpt: 2 seeds per pixel, each redistributed by about 100 mutations.
+  expectAgreementOnCornellBox(Integrator::Erpt, Integrator::Bdpt, 2, 20);
 }
 
 TEST(IntegratorAgreement, MmltAndBdptAgreeOnCornellBox) {

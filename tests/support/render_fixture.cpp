@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "mcmc/erpt.h"
 #include "mcmc/mmlt.h"
 #include "mcmc/pssmlt.h"
 #include "render/renderer.h"
@@ -40,6 +41,16 @@ Image renderInProcess(const std::string& scene, RenderSettings settings) {
     return Renderer::resolve(film, film.data(), pssmltResolveDivisor(total, b, area));
   }
   const int spp = s.spp.value_or(16);
+  if (s.integrator == Integrator::Erpt) {  // as mpi/erpt_driver does, all work units here
+    PtEvaluator eval(renderer.context(), s.width, s.height);
+    const int bootstrap = 100000;
+    const double b = erptBootstrapSum(eval, s.seed, bootstrap, 0, 1) / bootstrap;
+    ErptSettings es;
+    es.chainLength = s.chainLength;
+    for (int k = 0; k < spp; ++k)
+      for (int row = 0; row < s.height; ++row) erptRow(eval, es, b, s.seed, static_cast<uint64_t>(k), row, 1.0, film);
+    return Renderer::resolve(film, film.data(), spp);
+  }
   for (int k = 0; k < spp; ++k)
     for (int row = 0; row < s.height; ++row) renderer.renderRow(static_cast<uint64_t>(k), row, film);
   return Renderer::resolve(film, film.data(), spp);

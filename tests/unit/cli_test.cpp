@@ -45,6 +45,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"MutationsWithBdpt", "render " + kScene + " -o OUT --mutations-per-pixel 4", "pssmlt"},
                       BadInvocation{"TimeWithPssmlt", "render " + kScene + " -o OUT --integrator pssmlt --time 1", "--time"},
                       BadInvocation{"ZeroChains", "render " + kScene + " -o OUT --integrator pssmlt --chains 0", "chains"},
+                      BadInvocation{"TimeWithErpt", "render " + kScene + " -o OUT --integrator erpt --time 1", "--time"},
+                      BadInvocation{"ZeroChainLength", "render " + kScene + " -o OUT --integrator erpt --chain-length 0", "chain-length"},
                       BadInvocation{"MissingScene", "render /nonexistent.gltf -o OUT", "nonexistent"},
                       BadInvocation{"UnknownIntegrator", "render " + kScene + " -o OUT --integrator magic", "magic"},
                       BadInvocation{"NegativeSpp", "render " + kScene + " -o OUT --spp -3", "spp"},

@@ -1,0 +1,19 @@
+#pragma once
+// The distributed part of erpt: bootstrap shares, then seeds by work unit (sample index, row).
+#include "comm.h"
+#include "film/film.h"
+#include "mcmc/erpt.h"
+#include "render/renderer.h"
+
+namespace relt::mpi {
+
+struct ErptOutcome {
+  double normaliser = 0.0;  // mean energy of the bootstrap samples
+  int seedsPerPixel = 0;
+  ErptCounters counters;    // summed over ranks
+};
+
+// Renders this rank's share into `film` (not yet reduced); collective.
+ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film);
+
+}  // namespace relt::mpi

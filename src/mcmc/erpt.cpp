@@ -1,0 +1,113 @@
+#include "mcmc/erpt.h"
+
+#include <cmath>
+#include <vector>
+
+#include "core/rng.h"
+#include "mcmc/metropolis.h"
+#include "path/path_tracer.h"
+#include "pss/primary_sample_vector.h"
+
+namespace relt {
+namespace {
+
+constexpr uint64_t kSeedPurpose = 0xe4b7, kBootstrapPurpose = 0xe4b8;
+
+// A pixel's seed: the film position inside pixel (x, y) as the first two camera numbers, the rest
+// independent; every number handed out is recorded so the seed can become a chain's state.
+class PixelSeedSource final : public SampleSource {
+ public:
+  PixelSeedSource(uint64_t key, float u0, float u1) : source_(key), film_{u0, u1} {}
+  float next(SampleStream stream) override {
+    const int s = static_cast<int>(stream);
+    const float v = stream == SampleStream::Camera && values_[s].size() < 2 ? film_[values_[s].size()]
+                                                                             : source_.next(stream);
+    values_[s].push_back(v);
+    return v;
+  }
+  const std::vector<float>& values(int stream) const { return values_[stream]; }
+
+ private:
+  IndependentSource source_;
+  float film_[2];
+  std::vector<float> values_[kSampleStreamCount];
+};
+
+void deposit(Film& film, const PathSample& sample, float energy, double weight) {
+  if (energy > 0.0f && weight > 0.0) film.addSample(sample, weight / energy);
+}
+
+}  // namespace
+
+float PtEvaluator::operator()(SampleSource& u, PathSample& out) {
+  out.clear();
+  const float x = u.next(SampleStream::Camera), y = u.next(SampleStream::Camera);
+  tracePath(ctx_, Vec2(x * width_, y * height_), u, out);
+  const float e = out.luminanceSum();
+  return std::isfinite(e) && out.finite() ? e : 0.0f;
+}
+
+void ErptCounters::add(const ErptCounters& o) {
+  seeds += o.seeds;
+  chains += o.chains;
+  mutations += o.mutations;
+  accepted += o.accepted;
+  invalidProposals += o.invalidProposals;
+}
+
+double erptBootstrapSum(PtEvaluator& eval, uint64_t seed, int count, int first, int stride) {
+  double sum = 0.0;
+  PathSample sample;
+  for (int i = first; i < count; i += stride) {
+    IndependentSource u(hashKey(seed, kBootstrapPurpose, static_cast<uint64_t>(i)));
+    sum += eval(u, sample);
+  }
+  return sum;
+}
+
+ErptCounters erptRow(PtEvaluator& eval, const ErptSettings& settings, double normaliser, uint64_t seed,
+                     uint64_t sampleIndex, int row, double filmWeight, Film& film) {
+  ErptCounters counters;
+  const int w = eval.width(), h = eval.height();
+  const double energyPerDeposit = normaliser / settings.depositsPerSeed;
+  if (!(energyPerDeposit > 0.0)) return counters;
+  PathSample seedSample, current, proposal;
+  for (int x = 0; x < w; ++x) {
+    const uint64_t pixel = static_cast<uint64_t>(row) * w + x;
+    const uint64_t key = hashKey(seed, kSeedPurpose, pixel, sampleIndex);
+    Rng rng(key, 7);
+    const float jx = rng.uniform(), jy = rng.uniform();
+    PixelSeedSource source(key, (x + jx) / w, (row + jy) / h);
+    const float e = eval(source, seedSample);
+    ++counters.seeds;
+    const int chains = static_cast<int>(std::floor(rng.uniform() + e / (settings.chainLength * energyPerDeposit)));
+    for (int c = 0; c < chains; ++c) {
+      ++counters.chains;
+      PrimarySampleVector u(hashKey(key, c), settings.sizes);
+      for (int s = 0; s < kSampleStreamCount; ++s) u.setState(static_cast<SampleStream>(s), source.values(s));
+      current = seedSample;
+      float energy = e;
+      for (int j = 0; j < settings.chainLength; ++j) {
+        u.startIteration(false);
+        const float proposed = eval(u, proposal);
+        const float a = acceptance(energy, proposed);
+        ++counters.mutations;
+        if (!(proposed > 0.0f)) ++counters.invalidProposals;
+        // Each deposit carries e_d: the state's splats scaled to luminance e_d.
+        deposit(film, proposal, proposed, a * energyPerDeposit * filmWeight);
+        deposit(film, current, energy, (1.0f - a) * energyPerDeposit * filmWeight);
+        if (rng.uniform() < a) {
+          u.accept();
+          std::swap(current, proposal);
+          energy = proposed;
+          ++counters.accepted;
+        } else {
+          u.reject();
+        }
+      }
+    }
+  }
+  return counters;
+}
+
+}  // namespace relt
