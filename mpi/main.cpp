@@ -42,6 +42,9 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--chains", r.chains, "Markov-chain integrators: number of chains (independent of the rank count)")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
+  cmd.add_option("--snapshot-every", r.snapshotEvery,
+                 "pssmlt, mmlt: write the image so far (atomically) every this many seconds")
+      ->check(CLI::PositiveNumber);
   cmd.add_option("--chain-length", r.chainLength, "erpt: mutations per energy-redistribution chain")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
@@ -100,6 +103,8 @@ int main(int argc, char** argv) {
     if (chains && o.render.spp) throw relt::InputError("", "--spp", o.integrator + " takes --mutations-per-pixel");
     if (!chains && o.render.mutationsPerPixel)
       throw relt::InputError("", "--mutations-per-pixel", "only for the Markov-chain integrators (pssmlt, mmlt)");
+    if (!chains && o.render.snapshotEvery > 0.0)
+      throw relt::InputError("", "--snapshot-every", "only for the Markov-chain integrators (pssmlt, mmlt)");
     if (o.render.integrator == relt::Integrator::Erpt && o.render.seconds)
       throw relt::InputError("", "--time", "not implemented for erpt yet; use --spp (seeds per pixel)");
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;

@@ -1,9 +1,19 @@
 #include "pssmlt_driver.h"
 
+#include <unistd.h>
+
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+
+#include "mcmc/chain_pool.h"
+#include "render/schedule.h"
 
 namespace relt::mpi {
 namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 ChainCounters sumOverRanks(const ChainCounters& c) {
   ChainCounters s;
@@ -18,7 +28,8 @@ ChainCounters sumOverRanks(const ChainCounters& c) {
 
 }  // namespace
 
-PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film) {
+PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
+                        const SnapshotWriter& snapshot) {
   PssmltSettings ps;
   ps.mutationsPerPixel = settings.mutationsPerPixel.value_or(16.0);
   ps.chains = settings.chains;
@@ -31,24 +42,78 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
       mmlt ? mmltBootstrapTargets(mmltEval, settings.seed, ps.bootstrap, session.rank(), session.size())
            : bootstrapTargets(eval, settings.seed, ps.bootstrap, session.rank(), session.size());
   allreduceSum(targets);
-  double sum = 0.0;
-  for (double t : targets) sum += t;
+  double bootstrapSum = 0.0;
+  for (double t : targets) bootstrapSum += t;
 
-  PssmltOutcome out;
-  out.bootstrapSamples = targets.size();
-  out.totalMutations =
-      static_cast<uint64_t>(std::llround(ps.mutationsPerPixel * settings.width * static_cast<double>(settings.height)));
   std::vector<int> mine;
   for (int c = 0; c < ps.chains; ++c)
     if (ownsChain(c, session.rank(), session.size())) mine.push_back(c);
-  std::vector<ChainCounters> perDepth;
-  const ChainCounters local =
-      mmlt ? runMmltChains(mmltEval, targets, settings.seed, ps, mine, out.totalMutations, film, &perDepth)
-           : runChains(eval, targets, settings.seed, ps, mine, out.totalMutations, film);
-  for (const ChainCounters& c : perDepth) out.perDepth.push_back(sumOverRanks(c));
-  out.counters = sumOverRanks(local);
-  out.normaliser = mmlt ? mmltNormaliser(targets, settings.maxDepth, out.perDepth)
-                        : pooledNormaliser(sum, targets.size(), out.counters);
+  ChainPool pool(mmlt ? nullptr : &eval, mmlt ? &mmltEval : nullptr, targets, settings.seed, ps, mine);
+  const bool anyChains = allreduceMax(pool.size() > 0 ? 1 : 0) > 0;
+
+  // Rounds: every chain takes `perRound` steps (one mutation per pixel over all chains), so a timed
+  // render and snapshots stop at round boundaries that all ranks agree on.
+  const double area = double(settings.width) * settings.height;
+  const uint64_t perRound = std::max<uint64_t>(1, static_cast<uint64_t>(std::llround(area / ps.chains)));
+  const bool timed = settings.seconds.has_value();
+  const uint64_t total = static_cast<uint64_t>(std::llround(ps.mutationsPerPixel * area));
+  auto doneAfter = [&](uint64_t rounds, int c) {
+    const uint64_t r = rounds * perRound;
+    return timed ? r : std::min(r, chainMutations(total, ps.chains, c));
+  };
+  auto mutationsAfter = [&](uint64_t rounds) {
+    uint64_t n = 0;
+    for (int c = 0; c < ps.chains; ++c) n += doneAfter(rounds, c);
+    return n;
+  };
+  auto normaliser = [&](std::vector<ChainCounters>* perDepthOut, ChainCounters* countersOut) {
+    std::vector<ChainCounters> perDepth;
+    for (const ChainCounters& c : pool.perDepth()) perDepth.push_back(sumOverRanks(c));
+    const ChainCounters counters = sumOverRanks(pool.counters());
+    if (perDepthOut) *perDepthOut = perDepth;
+    if (countersOut) *countersOut = counters;
+    return mmlt ? mmltNormaliser(targets, settings.maxDepth, perDepth)
+                : pooledNormaliser(bootstrapSum, targets.size(), counters);
+  };
+
+  const auto start = Clock::now();
+  double elapsed = 0.0, lastRound = 0.0, lastSnapshot = 0.0, lastPrint = 0.0;
+  const bool tty = ::isatty(STDERR_FILENO);
+  uint64_t rounds = 0;
+  for (;;) {
+    const bool more = timed ? startAnotherPass(static_cast<int>(std::min<uint64_t>(rounds, 1)), elapsed, lastRound,
+                                               *settings.seconds)
+                            : mutationsAfter(rounds) < total;
+    if (!more || !anyChains) break;
+    std::vector<uint64_t> steps;
+    for (int c : mine) steps.push_back(doneAfter(rounds + 1, c) - doneAfter(rounds, c));
+    if (pool.size() > 0) pool.run(steps, film);
+    ++rounds;
+    const double now = allreduceMax(since(start));
+    lastRound = now - elapsed;
+    elapsed = now;
+    if (session.isRoot() && elapsed - lastPrint >= 1.0) {
+      lastPrint = elapsed;
+      const double done = double(mutationsAfter(rounds));
+      const double fraction = timed ? std::min(1.0, elapsed / *settings.seconds) : done / double(total);
+      std::fprintf(stderr, tty ? "\r%s" : "%s\n", progressLine(fraction, elapsed, done / elapsed).c_str());
+    }
+    if (settings.snapshotEvery > 0.0 && elapsed - lastSnapshot >= settings.snapshotEvery &&
+        (timed ? elapsed + lastRound <= *settings.seconds : mutationsAfter(rounds) < total)) {
+      lastSnapshot = elapsed;
+      std::vector<double> sums = film.data();
+      reduceSumToRoot(sums);
+      const double b = normaliser(nullptr, nullptr);
+      if (session.isRoot()) snapshot(sums, pssmltResolveDivisor(mutationsAfter(rounds), b, area));
+    }
+  }
+
+  if (session.isRoot() && tty && lastPrint > 0.0) std::fprintf(stderr, "\n");
+  PssmltOutcome out;
+  out.bootstrapSamples = targets.size();
+  out.rounds = rounds;
+  out.totalMutations = mutationsAfter(rounds);
+  out.normaliser = normaliser(&out.perDepth, &out.counters);
   return out;
 }
 

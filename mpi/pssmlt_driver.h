@@ -1,5 +1,7 @@
 #pragma once
 // The distributed part of pssmlt and mmlt: bootstrap shares, chain ownership, and the sums.
+#include <functional>
+
 #include "comm.h"
 #include "film/film.h"
 #include "mcmc/mmlt.h"
@@ -14,9 +16,15 @@ struct PssmltOutcome {
   ChainCounters counters;         // summed over ranks
   uint64_t bootstrapSamples = 0;
   std::vector<ChainCounters> perDepth;  // mmlt: summed over ranks, one entry per path length
+  uint64_t rounds = 0;
 };
 
+// Root only: writes the image so far, given reduced film sums and the divisor for resolve().
+using SnapshotWriter = std::function<void(const std::vector<double>& sums, double divisor)>;
+
 // Runs every chain this rank owns into `film` (not yet reduced), pssmlt or mmlt; collective.
-PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film);
+// --time stops at a round boundary all ranks agree on; --snapshot-every calls `snapshot`.
+PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
+                        const SnapshotWriter& snapshot);
 
 }  // namespace relt::mpi

@@ -64,12 +64,14 @@ void runRender(const Session& session, RenderSettings settings) {
 
   Film film(settings.width, settings.height);
   if (isMarkovChain(settings.integrator)) {
-    if (settings.seconds)
-      throw InputError("", "--time",
-                       std::string("not implemented for ") + integratorName(settings.integrator) +
-                           " yet; use --mutations-per-pixel");
     const auto renderStart = Clock::now();
-    const PssmltOutcome o = runPssmlt(session, renderer, settings, film);
+    int snapshots = 0;
+    const PssmltOutcome o = runPssmlt(session, renderer, settings, film, [&](const std::vector<double>& sums, double d) {
+      const Image image = Renderer::resolve(film, sums, d);
+      writeExr(settings.output, image);
+      if (!settings.png.empty()) writePng(settings.png, image, settings.exposure);
+      ++snapshots;
+    });
     const double renderSeconds = allreduceMax(since(renderStart));
     reduceSumToRoot(film.data());
     const uint64_t rays = allreduceSum(renderer.rays());
@@ -83,6 +85,8 @@ void runRender(const Session& session, RenderSettings settings) {
     j["settings"] = settings.toJson();
     j["ranks"] = session.size();
     j["mutations"] = mutations;
+    j["rounds"] = o.rounds;
+    j["snapshots"] = snapshots;
     j["bootstrap_samples"] = o.bootstrapSamples;
     j["normaliser"] = o.normaliser;
     j["acceptance_small"] = o.counters.smallProposed ? double(o.counters.smallAccepted) / o.counters.smallProposed : 0.0;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "mcmc/chain_pool.h"
+
 namespace relt {
 
 float MmltEvaluator::operator()(int depth, SampleSource& u, PathSample& out) {
@@ -43,22 +45,13 @@ double mmltNormaliser(const std::vector<double>& targets, int maxDepth, const st
 ChainCounters runMmltChains(MmltEvaluator& eval, const std::vector<double>& bootstrapTargets, uint64_t seed,
                             const PssmltSettings& settings, const std::vector<int>& chains, uint64_t totalMutations,
                             Film& film, std::vector<ChainCounters>* perDepth) {
-  ChainCounters total;
-  if (perDepth) perDepth->assign(static_cast<size_t>(eval.maxDepth()), ChainCounters{});
-  const Distribution1D bootstrap(bootstrapTargets);
-  if (bootstrap.total() <= 0.0) return total;
-  for (int c : chains) {
-    McmcChain chain(seed, c, settings);
-    const size_t index = chain.pickBootstrap(bootstrap);
-    const int depth = mmltDepthOfBootstrap(index, eval.maxDepth());
-    auto atDepth = [&](SampleSource& u, PathSample& out) { return eval(depth, u, out); };
-    chain.start(atDepth, bootstrapKey(seed, index));
-    const uint64_t n = chainMutations(totalMutations, settings.chains, c);
-    for (uint64_t i = 0; i < n; ++i) chain.step(atDepth, film);
-    total.add(chain.counters());
-    if (perDepth) (*perDepth)[static_cast<size_t>(depth - 1)].add(chain.counters());
+  ChainPool pool(nullptr, &eval, bootstrapTargets, seed, settings, chains);
+  pool.run(chainSteps(chains, totalMutations, settings.chains, pool.size()), film);
+  if (perDepth) {
+    *perDepth = pool.perDepth();
+    if (perDepth->empty()) perDepth->assign(static_cast<size_t>(eval.maxDepth()), ChainCounters{});
   }
-  return total;
+  return pool.counters();
 }
 
 }  // namespace relt

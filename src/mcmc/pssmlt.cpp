@@ -1,5 +1,6 @@
 #include "mcmc/pssmlt.h"
 
+#include "mcmc/chain_pool.h"
 #include "mcmc/metropolis.h"
 
 namespace relt {
@@ -67,17 +68,17 @@ void McmcChain::finishStep(bool large, float proposed, Film& film) {
 ChainCounters runChains(PssEvaluator& eval, const std::vector<double>& bootstrapTargets, uint64_t seed,
                         const PssmltSettings& settings, const std::vector<int>& chains, uint64_t totalMutations,
                         Film& film) {
-  ChainCounters total;
-  const Distribution1D bootstrap(bootstrapTargets);
-  if (bootstrap.total() <= 0.0) return total;  // nothing visible: the image stays black
-  for (int c : chains) {
-    McmcChain chain(seed, c, settings);
-    chain.start(eval, bootstrapKey(seed, chain.pickBootstrap(bootstrap)));
-    const uint64_t n = chainMutations(totalMutations, settings.chains, c);
-    for (uint64_t i = 0; i < n; ++i) chain.step(eval, film);
-    total.add(chain.counters());
-  }
-  return total;
+  ChainPool pool(&eval, nullptr, bootstrapTargets, seed, settings, chains);
+  pool.run(chainSteps(chains, totalMutations, settings.chains, pool.size()), film);
+  return pool.counters();
+}
+
+std::vector<uint64_t> chainSteps(const std::vector<int>& chains, uint64_t totalMutations, int chainCount,
+                                 size_t poolSize) {
+  std::vector<uint64_t> steps;
+  if (poolSize == 0) return steps;
+  for (int c : chains) steps.push_back(chainMutations(totalMutations, chainCount, c));
+  return steps;
 }
 
 }  // namespace relt

@@ -32,6 +32,7 @@ nlohmann::json RenderSettings::toJson() const {
   if (isMarkovChain(integrator)) {
     j["mutations_per_pixel"] = mutationsPerPixel.value_or(16.0);
     j["chains"] = chains;
+    if (snapshotEvery > 0.0) j["snapshot_every"] = snapshotEvery;
   }
   return j;
 }

@@ -33,6 +33,7 @@ struct RenderSettings {
   std::optional<double> mutationsPerPixel;  // default 16
   int chains = 256;
   int chainLength = 100;  // erpt: mutations per chain (m)
+  double snapshotEvery = 0.0;  // Markov chains: write the image so far every this many seconds (0: never)
 
   nlohmann::json toJson() const;
 };
