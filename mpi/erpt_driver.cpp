@@ -7,6 +7,7 @@ namespace relt::mpi {
 ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film) {
   ErptSettings es;
   es.chainLength = settings.chainLength;
+  es.sizes = KelemenSizes{settings.smallStepMin, settings.smallStepMax};
   PtEvaluator eval(renderer.context(), settings.width, settings.height);
   const int bootstrap = 100000;
   ErptOutcome out;

@@ -42,6 +42,17 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--chains", r.chains, "Markov-chain integrators: number of chains (independent of the rank count)")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
+  cmd.add_option("--large-step-probability", r.largeStepProbability, "pssmlt, mmlt: probability of a large step")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd.add_option("--small-step-min", r.smallStepMin, "Kelemen small step: smallest size s1")
+      ->check(CLI::Range(1e-7, 0.5))
+      ->capture_default_str();
+  cmd.add_option("--small-step-max", r.smallStepMax, "Kelemen small step: largest size s2")
+      ->check(CLI::Range(1e-7, 0.5))
+      ->capture_default_str();
+  cmd.add_flag("--kelemen-weights", r.kelemenWeights,
+               "pssmlt: weight splats by Kelemen's balance heuristic between chain and large-step samples");
   cmd.add_option("--snapshot-every", r.snapshotEvery,
                  "pssmlt, mmlt: write the image so far (atomically) every this many seconds")
       ->check(CLI::PositiveNumber);
@@ -103,6 +114,10 @@ int main(int argc, char** argv) {
     if (chains && o.render.spp) throw relt::InputError("", "--spp", o.integrator + " takes --mutations-per-pixel");
     if (!chains && o.render.mutationsPerPixel)
       throw relt::InputError("", "--mutations-per-pixel", "only for the Markov-chain integrators (pssmlt, mmlt)");
+    if (o.render.smallStepMin >= o.render.smallStepMax)
+      throw relt::InputError("", "--small-step-min", "must be smaller than --small-step-max");
+    if (o.render.kelemenWeights && o.render.integrator != relt::Integrator::Pssmlt)
+      throw relt::InputError("", "--kelemen-weights", "only for pssmlt");
     if (!chains && o.render.snapshotEvery > 0.0)
       throw relt::InputError("", "--snapshot-every", "only for the Markov-chain integrators (pssmlt, mmlt)");
     if (o.render.integrator == relt::Integrator::Erpt && o.render.seconds)

@@ -28,10 +28,16 @@ nlohmann::json RenderSettings::toJson() const {
   j["camera"] = camera;
   j["exposure"] = exposure;
   j["mis"] = heuristic == MisHeuristic::Power ? "power" : "balance";
-  if (integrator == Integrator::Erpt) j["chain_length"] = chainLength;
+  if (integrator == Integrator::Erpt) {
+    j["chain_length"] = chainLength;
+    j["small_step"] = {smallStepMin, smallStepMax};
+  }
   if (isMarkovChain(integrator)) {
     j["mutations_per_pixel"] = mutationsPerPixel.value_or(16.0);
     j["chains"] = chains;
+    j["large_step_probability"] = largeStepProbability;
+    j["small_step"] = {smallStepMin, smallStepMax};
+    if (kelemenWeights) j["kelemen_weights"] = true;
     if (snapshotEvery > 0.0) j["snapshot_every"] = snapshotEvery;
   }
   return j;

@@ -33,6 +33,9 @@ struct RenderSettings {
   std::optional<double> mutationsPerPixel;  // default 16
   int chains = 256;
   int chainLength = 100;  // erpt: mutations per chain (m)
+  float largeStepProbability = 0.3f;                  // pssmlt, mmlt
+  float smallStepMin = 1.0f / 1024, smallStepMax = 1.0f / 64;  // Kelemen small-step sizes s1, s2
+  bool kelemenWeights = false;                         // pssmlt: Kelemen's large-step weighting
   double snapshotEvery = 0.0;  // Markov chains: write the image so far every this many seconds (0: never)
 
   nlohmann::json toJson() const;

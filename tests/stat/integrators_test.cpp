@@ -55,7 +55,8 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, IntegratorTest,
 // errors, the errors coming from independent seeds (fixed, so the test is deterministic). Markov
 // chain images have heavy-tailed errors (a chain that finds a bright path late), so their standard
 // errors are estimated from 20 seeds rather than 10.
-static void expectAgreementOnCornellBox(Integrator first, Integrator second, int spp, int seeds) {
+static void expectAgreementOnCornellBox(Integrator first, Integrator second, int spp, int seeds,
+                                        bool kelemenWeights = false) {
   const std::string path = sourcePath("scenes/cornell-box.gltf");
   const int size = 48;
   struct Region {
@@ -71,7 +72,9 @@ static void expectAgreementOnCornellBox(Integrator first, Integrator second, int
   const Integrator integrators[2] = {first, second};
   for (int i = 0; i < 2; ++i)
     for (int k = 0; k < seeds; ++k) {
-      const Image image = renderInProcess(path, settingsFor(integrators[i], 1000 * (i + 1) + k, spp, size));
+      RenderSettings settings = settingsFor(integrators[i], 1000 * (i + 1) + k, spp, size);
+      settings.kelemenWeights = kelemenWeights && isMarkovChain(integrators[i]);
+      const Image image = renderInProcess(path, settings);
       for (int r = 0; r < 5; ++r)
         values[i][r].push_back(regionMean(image, regions[r].x0, regions[r].y0, regions[r].x1, regions[r].y1));
     }
@@ -92,6 +95,10 @@ TEST(IntegratorAgreement, PtAndBdptAgreeOnCornellBox) {
 
 TEST(IntegratorAgreement, PssmltAndBdptAgreeOnCornellBox) {
   expectAgreementOnCornellBox(Integrator::Pssmlt, Integrator::Bdpt, 16, 20);
+}
+
+TEST(IntegratorAgreement, PssmltWithKelemenWeightsAndBdptAgreeOnCornellBox) {
+  expectAgreementOnCornellBox(Integrator::Pssmlt, Integrator::Bdpt, 16, 20, true);
 }
 
 TEST(IntegratorAgreement, ErptAndBdptAgreeOnCornellBox) {
