@@ -1,5 +1,7 @@
 #include "erpt_driver.h"
 
+#include <chrono>
+
 #include "render/schedule.h"
 
 namespace relt::mpi {
@@ -13,12 +15,26 @@ ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSett
   ErptOutcome out;
   out.normaliser = allreduceSum(erptBootstrapSum(eval, settings.seed, bootstrap, session.rank(), session.size())) /
                    bootstrap;
-  out.seedsPerPixel = settings.spp.value_or(16);
+  // Passes of one seed per pixel; a timed render decides collectively after each pass, as pt does.
+  const bool timed = settings.seconds.has_value();
+  const int spp = settings.spp.value_or(timed ? 0 : 16);
   ErptCounters local;
-  for (int k = 0; k < out.seedsPerPixel; ++k)
+  const auto start = std::chrono::steady_clock::now();
+  double elapsed = 0.0, lastPass = 0.0;
+  int passes = 0;
+  for (;;) {
+    if (timed ? !startAnotherPass(passes, elapsed, lastPass, *settings.seconds) : passes >= spp) break;
     for (int row = 0; row < settings.height; ++row)
-      if (ownsUnit(static_cast<uint64_t>(k), row, settings.height, session.rank(), session.size()))
-        local.add(erptRow(eval, es, out.normaliser, settings.seed, static_cast<uint64_t>(k), row, 1.0, film));
+      if (ownsUnit(static_cast<uint64_t>(passes), row, settings.height, session.rank(), session.size()))
+        local.add(erptRow(eval, es, out.normaliser, settings.seed, static_cast<uint64_t>(passes), row, 1.0, film));
+    ++passes;
+    if (timed) {
+      const double now = allreduceMax(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      lastPass = now - elapsed;
+      elapsed = now;
+    }
+  }
+  out.seedsPerPixel = passes;
   out.counters.seeds = allreduceSum(local.seeds);
   out.counters.chains = allreduceSum(local.chains);
   out.counters.mutations = allreduceSum(local.mutations);

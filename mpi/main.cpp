@@ -120,8 +120,6 @@ int main(int argc, char** argv) {
       throw relt::InputError("", "--kelemen-weights", "only for pssmlt");
     if (!chains && o.render.snapshotEvery > 0.0)
       throw relt::InputError("", "--snapshot-every", "only for the Markov-chain integrators (pssmlt, mmlt)");
-    if (o.render.integrator == relt::Integrator::Erpt && o.render.seconds)
-      throw relt::InputError("", "--time", "not implemented for erpt yet; use --spp (seeds per pixel)");
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
     relt::mpi::runRender(session, o.render);
     return 0;

@@ -45,7 +45,6 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"MutationsWithBdpt", "render " + kScene + " -o OUT --mutations-per-pixel 4", "pssmlt"},
                       BadInvocation{"SnapshotWithBdpt", "render " + kScene + " -o OUT --snapshot-every 1", "--snapshot-every"},
                       BadInvocation{"ZeroChains", "render " + kScene + " -o OUT --integrator pssmlt --chains 0", "chains"},
-                      BadInvocation{"TimeWithErpt", "render " + kScene + " -o OUT --integrator erpt --time 1", "--time"},
                       BadInvocation{"ZeroChainLength", "render " + kScene + " -o OUT --integrator erpt --chain-length 0", "chain-length"},
                       BadInvocation{"KelemenWeightsWithMmlt", "render " + kScene + " -o OUT --integrator mmlt --kelemen-weights", "pssmlt"},
                       BadInvocation{"SmallStepsOutOfOrder", "render " + kScene + " -o OUT --integrator pssmlt --small-step-min 0.1 --small-step-max 0.01", "small-step"},
