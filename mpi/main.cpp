@@ -6,6 +6,7 @@
 
 #include "comm.h"
 #include "core/error.h"
+#include "image/compare.h"
 #include "render_driver.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_summary.h"
@@ -19,6 +20,7 @@ struct Options {
   relt::RenderSettings render;
   std::string integrator = "bdpt", mis = "power";
   std::string infoScene;
+  std::string compareA, compareB, compareDiff, comparePng;
 };
 
 void addRenderOptions(CLI::App& cmd, Options& o) {
@@ -84,6 +86,11 @@ int main(int argc, char** argv) {
   addRenderOptions(*render, o);
   CLI::App* info = app.add_subcommand("info", "validate and summarise a scene");
   info->add_option("scene", o.infoScene, "glTF 2.0 scene")->required();
+  CLI::App* compare = app.add_subcommand("compare", "compare an image with a reference: RMSE, relative MSE, means");
+  compare->add_option("image", o.compareA, "image to assess (OpenEXR)")->required();
+  compare->add_option("reference", o.compareB, "reference image (OpenEXR)")->required();
+  compare->add_option("--diff", o.compareDiff, "write the signed difference image - reference (OpenEXR)");
+  compare->add_option("--png", o.comparePng, "write |difference| as a PNG (exposure +3)");
 
   try {
     app.parse(argc, argv);
@@ -99,6 +106,22 @@ int main(int argc, char** argv) {
   }
 
   try {
+    if (*compare) {
+      const relt::Image a = relt::readExr(o.compareA), b = relt::readExr(o.compareB);
+      const relt::ImageComparison c = relt::compareImages(a, b, o.compareA, o.compareB);
+      if (root) {
+        std::printf("{\"rmse\": %.9g, \"rel_mse\": %.9g, \"mean\": %.9g, \"reference_mean\": %.9g}\n", c.rmse,
+                    c.relMse, c.meanA, c.meanB);
+        const relt::Image d = relt::signedDifference(a, b);
+        if (!o.compareDiff.empty()) relt::writeExr(o.compareDiff, d);
+        if (!o.comparePng.empty()) {
+          relt::Image magnitude = d;
+          for (float& v : magnitude.rgb) v = std::abs(v);
+          relt::writePng(o.comparePng, magnitude, 3.0f);
+        }
+      }
+      return 0;
+    }
     if (*info) {
       const relt::Scene scene = relt::loadGltf(o.infoScene);
       if (root) std::cout << relt::summarizeScene(scene) << std::flush;

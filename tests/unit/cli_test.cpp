@@ -95,6 +95,17 @@ TEST(Cli, InfoSummarisesAValidButUnrenderableSceneThenFailsWithExitCode2) {
   EXPECT_NE(r.output.find("SimpleMeshes.gltf: scene: no camera"), std::string::npos) << r.output;
 }
 
+TEST(Cli, CompareReportsZeroErrorForAnImageAgainstItselfAndWritesTheDifference) {
+  const std::string dir = makeTempDir("compare");
+  ASSERT_EQ(runCommand(reltBinary() + " render " + kScene + " -o " + dir + "/a.exr --spp 1 --width 16 --height 16").exitCode, 0);
+  const CommandResult r = runCommand(reltBinary() + " compare " + dir + "/a.exr " + dir + "/a.exr --diff " + dir +
+                                     "/d.exr --png " + dir + "/d.png");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("\"rmse\": 0,"), std::string::npos) << r.output;
+  EXPECT_TRUE(fileExists(dir + "/d.exr"));
+  EXPECT_TRUE(fileExists(dir + "/d.png"));
+}
+
 TEST(Cli, RenderWritesExrPngAndStats) {
   const std::string dir = makeTempDir("cli-render");
   const CommandResult r = runCommand(reltBinary() + " render " + kScene + " -o " + dir + "/a.exr --png " + dir +

@@ -1,0 +1,35 @@
+#include "image/compare.h"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.h"
+
+namespace relt {
+
+ImageComparison compareImages(const Image& a, const Image& b, const std::string& nameA, const std::string& nameB) {
+  if (a.width != b.width || a.height != b.height)
+    throw InputError(nameA, "", "is " + std::to_string(a.width) + "x" + std::to_string(a.height) + " but " + nameB +
+                                    " is " + std::to_string(b.width) + "x" + std::to_string(b.height));
+  ImageComparison c;
+  double se = 0.0, rel = 0.0;
+  for (size_t i = 0; i < a.rgb.size(); ++i) {
+    const double d = double(a.rgb[i]) - double(b.rgb[i]);
+    se += d * d;
+    rel += d * d / (double(b.rgb[i]) * b.rgb[i] + 0.01);
+  }
+  const double n = a.rgb.empty() ? 1.0 : double(a.rgb.size());
+  c.rmse = std::sqrt(se / n);
+  c.relMse = rel / n;
+  c.meanA = a.mean();
+  c.meanB = b.mean();
+  return c;
+}
+
+Image signedDifference(const Image& a, const Image& b) {
+  Image d(a.width, a.height);
+  for (size_t i = 0; i < d.rgb.size(); ++i) d.rgb[i] = a.rgb[i] - b.rgb[i];
+  return d;
+}
+
+}  // namespace relt

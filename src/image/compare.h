@@ -1,0 +1,20 @@
+#pragma once
+// Image differences for convergence studies (`relt compare`, benchmarks): root-mean-square error,
+// relative MSE and the signed difference image.
+#include "image/image.h"
+
+namespace relt {
+
+struct ImageComparison {
+  double rmse = 0.0;    // sqrt(mean over pixels and channels of (a - b)^2)
+  double relMse = 0.0;  // mean of (a - b)^2 / (b^2 + 0.01), b the reference (as in many papers)
+  double meanA = 0.0, meanB = 0.0;
+};
+
+// b is the reference. Throws InputError when the sizes differ (naming both).
+ImageComparison compareImages(const Image& a, const Image& b, const std::string& nameA = "A",
+                              const std::string& nameB = "B");
+// a - b per pixel and channel.
+Image signedDifference(const Image& a, const Image& b);
+
+}  // namespace relt
