@@ -52,6 +52,45 @@ void writeOutputs(const RenderSettings& settings, const Image& image, nlohmann::
   }
 }
 
+// What every rank contributes once rendering ends (collective): the film summed on the root,
+// counters summed, timings gathered.
+struct Gathered {
+  double renderSeconds = 0.0;
+  uint64_t rays = 0, dropped = 0;
+  std::vector<double> collective;
+};
+
+Gathered gatherAfterRender(Clock::time_point renderStart, const Renderer& renderer, Film& film) {
+  Gathered g;
+  g.renderSeconds = allreduceMax(since(renderStart));
+  reduceSumToRoot(film.data());
+  g.rays = allreduceSum(renderer.rays());
+  g.dropped = allreduceSum(film.droppedSamples());
+  g.collective = allgather(collectiveSeconds());
+  return g;
+}
+
+// The stats every integrator writes.
+nlohmann::json commonStats(const RenderSettings& settings, const Session& session, const Gathered& g,
+                           const Image& image) {
+  nlohmann::json j;
+  j["settings"] = settings.toJson();
+  j["ranks"] = session.size();
+  j["rays"] = g.rays;
+  j["render_seconds"] = g.renderSeconds;
+  j["rays_per_second"] = g.rays / std::max(g.renderSeconds, 1e-9);
+  j["nan_inf_samples_dropped"] = g.dropped;
+  j["collective_seconds_per_rank"] = g.collective;
+  j["image_mean"] = image.mean();
+  return j;
+}
+
+void addMutationRates(nlohmann::json& j, uint64_t mutations, const Gathered& g, int ranks) {
+  j["mutations"] = mutations;
+  j["mutations_per_second"] = mutations / std::max(g.renderSeconds, 1e-9);
+  j["mutations_per_second_per_rank"] = mutations / std::max(g.renderSeconds, 1e-9) / ranks;
+}
+
 }  // namespace
 
 void runRender(const Session& session, RenderSettings settings) {
@@ -72,19 +111,13 @@ void runRender(const Session& session, RenderSettings settings) {
       if (!settings.png.empty()) writePng(settings.png, image, settings.exposure);
       ++snapshots;
     });
-    const double renderSeconds = allreduceMax(since(renderStart));
-    reduceSumToRoot(film.data());
-    const uint64_t rays = allreduceSum(renderer.rays());
-    const uint64_t dropped = allreduceSum(film.droppedSamples());
-    const std::vector<double> collective = allgather(collectiveSeconds());
+    const Gathered g = gatherAfterRender(renderStart, renderer, film);
     if (!session.isRoot()) return;
     const double area = double(settings.width) * settings.height;
     const Image image = Renderer::resolve(film, film.data(), pssmltResolveDivisor(o.totalMutations, o.normaliser, area));
     const uint64_t mutations = o.counters.smallProposed + o.counters.largeProposed;
-    nlohmann::json j;
-    j["settings"] = settings.toJson();
-    j["ranks"] = session.size();
-    j["mutations"] = mutations;
+    nlohmann::json j = commonStats(settings, session, g, image);
+    addMutationRates(j, mutations, g, session.size());
     j["rounds"] = o.rounds;
     j["snapshots"] = snapshots;
     j["bootstrap_samples"] = o.bootstrapSamples;
@@ -103,52 +136,30 @@ void runRender(const Session& session, RenderSettings settings) {
       }
       j["per_depth"] = depths;
     }
-    j["rays"] = rays;
-    j["render_seconds"] = renderSeconds;
-    j["mutations_per_second"] = mutations / std::max(renderSeconds, 1e-9);
-    j["mutations_per_second_per_rank"] = mutations / std::max(renderSeconds, 1e-9) / session.size();
-    j["rays_per_second"] = rays / std::max(renderSeconds, 1e-9);
-    j["nan_inf_samples_dropped"] = dropped;
-    j["collective_seconds_per_rank"] = collective;
-    j["image_mean"] = image.mean();
     writeOutputs(settings, image, j, wallStart);
     std::fprintf(stderr, "relt: %llu mutations, %.2f s, %.3f M mutations/s; wrote %s\n",
-                 static_cast<unsigned long long>(mutations), renderSeconds,
-                 mutations / std::max(renderSeconds, 1e-9) * 1e-6, settings.output.c_str());
+                 static_cast<unsigned long long>(mutations), g.renderSeconds,
+                 mutations / std::max(g.renderSeconds, 1e-9) * 1e-6, settings.output.c_str());
     return;
   }
   if (settings.integrator == Integrator::Erpt) {
     const auto renderStart = Clock::now();
     const ErptOutcome o = runErpt(session, renderer, settings, film);
-    const double renderSeconds = allreduceMax(since(renderStart));
-    reduceSumToRoot(film.data());
-    const uint64_t rays = allreduceSum(renderer.rays());
-    const uint64_t dropped = allreduceSum(film.droppedSamples());
-    const std::vector<double> collective = allgather(collectiveSeconds());
+    const Gathered g = gatherAfterRender(renderStart, renderer, film);
     if (!session.isRoot()) return;
     const Image image = Renderer::resolve(film, film.data(), o.seedsPerPixel);
-    nlohmann::json j;
-    j["settings"] = settings.toJson();
-    j["ranks"] = session.size();
+    nlohmann::json j = commonStats(settings, session, g, image);
+    addMutationRates(j, o.counters.mutations, g, session.size());
     j["spp"] = o.seedsPerPixel;
     j["seeds"] = o.counters.seeds;
     j["chains"] = o.counters.chains;
-    j["mutations"] = o.counters.mutations;
     j["acceptance"] = o.counters.mutations ? double(o.counters.accepted) / o.counters.mutations : 0.0;
     j["invalid_proposals"] = o.counters.invalidProposals;
     j["normaliser"] = o.normaliser;
-    j["rays"] = rays;
-    j["render_seconds"] = renderSeconds;
-    j["mutations_per_second"] = o.counters.mutations / std::max(renderSeconds, 1e-9);
-    j["mutations_per_second_per_rank"] = o.counters.mutations / std::max(renderSeconds, 1e-9) / session.size();
-    j["rays_per_second"] = rays / std::max(renderSeconds, 1e-9);
-    j["nan_inf_samples_dropped"] = dropped;
-    j["collective_seconds_per_rank"] = collective;
-    j["image_mean"] = image.mean();
     writeOutputs(settings, image, j, wallStart);
     std::fprintf(stderr, "relt: %llu seeds, %llu chains, %llu mutations, %.2f s; wrote %s\n",
                  static_cast<unsigned long long>(o.counters.seeds), static_cast<unsigned long long>(o.counters.chains),
-                 static_cast<unsigned long long>(o.counters.mutations), renderSeconds, settings.output.c_str());
+                 static_cast<unsigned long long>(o.counters.mutations), g.renderSeconds, settings.output.c_str());
     return;
   }
   const int height = settings.height;
@@ -175,33 +186,21 @@ void runRender(const Session& session, RenderSettings settings) {
       std::fprintf(stderr, tty ? "\r%s" : "%s\n", progressLine(fraction, elapsed, rate).c_str());
     }
   }
-  const double renderSeconds = allreduceMax(since(renderStart));
   if (session.isRoot() && tty) std::fprintf(stderr, "\n");
-
-  reduceSumToRoot(film.data());
   const uint64_t samples = allreduceSum(renderer.samples());
-  const uint64_t rays = allreduceSum(renderer.rays());
-  const uint64_t dropped = allreduceSum(film.droppedSamples());
-  const std::vector<double> collective = allgather(collectiveSeconds());
+  const Gathered g = gatherAfterRender(renderStart, renderer, film);
   if (!session.isRoot()) return;
 
   const Image image = Renderer::resolve(film, film.data(), passes);
-  nlohmann::json j;
-  j["settings"] = settings.toJson();
-  j["ranks"] = session.size();
+  nlohmann::json j = commonStats(settings, session, g, image);
   j["spp"] = passes;
   j["samples"] = samples;
-  j["rays"] = rays;
-  j["render_seconds"] = renderSeconds;
-  j["samples_per_second"] = samples / std::max(renderSeconds, 1e-9);
-  j["rays_per_second"] = rays / std::max(renderSeconds, 1e-9);
-  j["samples_per_second_per_rank"] = samples / std::max(renderSeconds, 1e-9) / session.size();
-  j["nan_inf_samples_dropped"] = dropped;
-  j["collective_seconds_per_rank"] = collective;
-  j["image_mean"] = image.mean();
+  j["samples_per_second"] = samples / std::max(g.renderSeconds, 1e-9);
+  j["samples_per_second_per_rank"] = samples / std::max(g.renderSeconds, 1e-9) / session.size();
   writeOutputs(settings, image, j, wallStart);
-  std::fprintf(stderr, "relt: %d spp, %.2f s, %.3f M samples/s, %.2f M rays/s; wrote %s%s%s\n", passes, renderSeconds,
-               samples / std::max(renderSeconds, 1e-9) * 1e-6, rays / std::max(renderSeconds, 1e-9) * 1e-6,
+  std::fprintf(stderr, "relt: %d spp, %.2f s, %.3f M samples/s, %.2f M rays/s; wrote %s%s%s\n", passes,
+               g.renderSeconds, samples / std::max(g.renderSeconds, 1e-9) * 1e-6,
+               g.rays / std::max(g.renderSeconds, 1e-9) * 1e-6,
                settings.output.c_str(), settings.png.empty() ? "" : " and ", settings.png.c_str());
 }
 
