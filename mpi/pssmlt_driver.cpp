@@ -102,7 +102,7 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
       lastPrint = elapsed;
       const double done = double(mutationsAfter(rounds));
       const double fraction = timed ? std::min(1.0, elapsed / *settings.seconds) : done / double(total);
-      std::fprintf(stderr, tty ? "\r%s" : "%s\n", progressLine(fraction, elapsed, done / elapsed).c_str());
+      std::fprintf(stderr, tty ? "\r%s" : "%s\n", progressLine(fraction, elapsed, done / elapsed, "mutations").c_str());
     }
     if (settings.snapshotEvery > 0.0 && elapsed - lastSnapshot >= settings.snapshotEvery &&
         (timed ? elapsed + lastRound <= *settings.seconds : mutationsAfter(rounds) < total)) {

@@ -21,6 +21,7 @@ inline bool startAnotherPass(int passesDone, double elapsedSeconds, double lastP
 }
 
 // "42.0%  3.1 s elapsed  ETA 4.2 s  1.23 M samples/s"
-std::string progressLine(double fraction, double elapsedSeconds, double samplesPerSecond);
+std::string progressLine(double fraction, double elapsedSeconds, double samplesPerSecond,
+                         const char* unit = "samples");
 
 }  // namespace relt
