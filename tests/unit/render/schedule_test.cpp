@@ -29,3 +29,9 @@ TEST(Schedule, TimedRenderStopsBeforeOverrunningTheBudget) {
   EXPECT_TRUE(startAnotherPass(3, 0.6, 0.2, 1.0));
   EXPECT_FALSE(startAnotherPass(4, 0.9, 0.2, 1.0));
 }
+
+TEST(ProgressLine, ShowsPercentElapsedEtaAndRateInTheGivenUnit) {
+  EXPECT_EQ(progressLine(0.5, 2.0, 1.5e6), " 50.0%  2.0 s elapsed  ETA 2.0 s  1.50 M samples/s");
+  EXPECT_EQ(progressLine(0.25, 1.0, 2e5, "mutations"), " 25.0%  1.0 s elapsed  ETA 3.0 s  0.20 M mutations/s");
+  EXPECT_EQ(progressLine(0.0, 0.0, 0.0), "  0.0%  0.0 s elapsed  ETA 0.0 s  0.00 M samples/s");
+}
