@@ -11,6 +11,7 @@ struct ErptOutcome {
   double normaliser = 0.0;  // mean energy of the bootstrap samples
   int seedsPerPixel = 0;
   ErptCounters counters;    // summed over ranks
+  std::vector<double> proposals;  // --erpt-proposal-filter: proposed mutations per pixel, on the root
 };
 
 // Renders this rank's share into `film` (not yet reduced); collective.

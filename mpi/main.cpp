@@ -58,6 +58,11 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--snapshot-every", r.snapshotEvery,
                  "pssmlt, mmlt: write the image so far (atomically) every this many seconds")
       ->check(CLI::PositiveNumber);
+  cmd.add_option("--erpt-max-consecutive", r.erptMaxConsecutive,
+                 "erpt: stop depositing after this many mutations on one pixel (biased noise filter; 0 = off)")
+      ->check(CLI::Range(0, 1 << 20));
+  cmd.add_flag("--erpt-proposal-filter", r.erptProposalFilter,
+               "erpt: scale pixels by blurred / actual proposed mutations (biased noise filter)");
   cmd.add_option("--chain-length", r.chainLength, "erpt: mutations per energy-redistribution chain")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
@@ -141,6 +146,8 @@ int main(int argc, char** argv) {
       throw relt::InputError("", "--small-step-min", "must be smaller than --small-step-max");
     if (o.render.kelemenWeights && o.render.integrator != relt::Integrator::Pssmlt)
       throw relt::InputError("", "--kelemen-weights", "only for pssmlt");
+    if (o.render.integrator != relt::Integrator::Erpt && (o.render.erptMaxConsecutive > 0 || o.render.erptProposalFilter))
+      throw relt::InputError("", "--erpt-max-consecutive/--erpt-proposal-filter", "only for erpt");
     if (!chains && o.render.snapshotEvery > 0.0)
       throw relt::InputError("", "--snapshot-every", "only for the Markov-chain integrators (pssmlt, mmlt)");
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;

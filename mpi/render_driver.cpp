@@ -147,7 +147,8 @@ void runRender(const Session& session, RenderSettings settings) {
     const ErptOutcome o = runErpt(session, renderer, settings, film);
     const Gathered g = gatherAfterRender(renderStart, renderer, film);
     if (!session.isRoot()) return;
-    const Image image = Renderer::resolve(film, film.data(), o.seedsPerPixel);
+    Image image = Renderer::resolve(film, film.data(), o.seedsPerPixel);
+    if (!o.proposals.empty()) applyProposalFilter(image, o.proposals);
     nlohmann::json j = commonStats(settings, session, g, image);
     addMutationRates(j, o.counters.mutations, g, session.size());
     j["spp"] = o.seedsPerPixel;

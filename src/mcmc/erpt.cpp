@@ -1,5 +1,6 @@
 #include "mcmc/erpt.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -32,6 +33,14 @@ class PixelSeedSource final : public SampleSource {
   float film_[2];
   std::vector<float> values_[kSampleStreamCount];
 };
+
+// Pixel of a chain state: its first two camera numbers are the film position.
+int64_t pixelOf(const PrimarySampleVector& u, int w, int h) {
+  const auto& c = u.coordinates(SampleStream::Camera);
+  if (c.size() < 2) return -1;
+  const int x = std::min(w - 1, static_cast<int>(c[0].value * w)), y = std::min(h - 1, static_cast<int>(c[1].value * h));
+  return static_cast<int64_t>(y) * w + x;
+}
 
 void deposit(Film& film, const PathSample& sample, float energy, double weight) {
   if (energy > 0.0f && weight > 0.0) film.addSample(sample, weight / energy);
@@ -66,7 +75,7 @@ double erptBootstrapSum(PtEvaluator& eval, uint64_t seed, int count, int first, 
 }
 
 ErptCounters erptRow(PtEvaluator& eval, const ErptSettings& settings, double normaliser, uint64_t seed,
-                     uint64_t sampleIndex, int row, double filmWeight, Film& film) {
+                     uint64_t sampleIndex, int row, double filmWeight, Film& film, std::vector<double>* proposals) {
   ErptCounters counters;
   const int w = eval.width(), h = eval.height();
   const double energyPerDeposit = normaliser / settings.depositsPerSeed;
@@ -87,19 +96,28 @@ ErptCounters erptRow(PtEvaluator& eval, const ErptSettings& settings, double nor
       for (int s = 0; s < kSampleStreamCount; ++s) u.setState(static_cast<SampleStream>(s), source.values(s));
       current = seedSample;
       float energy = e;
+      int64_t currentPixel = pixelOf(u, w, h), lastPixel = -1;
+      int consecutive = 0;
       for (int j = 0; j < settings.chainLength; ++j) {
         u.startIteration(false);
         const float proposed = eval(u, proposal);
+        const int64_t proposedPixel = pixelOf(u, w, h);
+        if (proposals && proposedPixel >= 0) (*proposals)[static_cast<size_t>(proposedPixel)] += 1.0;
         const float a = acceptance(energy, proposed);
         ++counters.mutations;
         if (!(proposed > 0.0f)) ++counters.invalidProposals;
+        consecutive = currentPixel == lastPixel ? consecutive + 1 : 1;
+        lastPixel = currentPixel;
         // Each deposit carries e_d: the state's splats scaled to luminance e_d.
-        deposit(film, proposal, proposed, a * energyPerDeposit * filmWeight);
-        deposit(film, current, energy, (1.0f - a) * energyPerDeposit * filmWeight);
+        if (settings.maxConsecutive <= 0 || consecutive <= settings.maxConsecutive) {
+          deposit(film, proposal, proposed, a * energyPerDeposit * filmWeight);
+          deposit(film, current, energy, (1.0f - a) * energyPerDeposit * filmWeight);
+        }
         if (rng.uniform() < a) {
           u.accept();
           std::swap(current, proposal);
           energy = proposed;
+          currentPixel = proposedPixel;
           ++counters.accepted;
         } else {
           u.reject();
@@ -108,6 +126,27 @@ ErptCounters erptRow(PtEvaluator& eval, const ErptSettings& settings, double nor
     }
   }
   return counters;
+}
+
+void applyProposalFilter(Image& image, const std::vector<double>& proposals, int radius) {
+  const int w = image.width, h = image.height;
+  // Box blur by a summed-area table.
+  std::vector<double> sat(static_cast<size_t>(w + 1) * (h + 1), 0.0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      sat[(y + 1) * size_t(w + 1) + x + 1] = proposals[size_t(y) * w + x] + sat[y * size_t(w + 1) + x + 1] +
+                                             sat[(y + 1) * size_t(w + 1) + x] - sat[y * size_t(w + 1) + x];
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double actual = proposals[size_t(y) * w + x];
+      if (!(actual > 0.0)) continue;
+      const int x0 = std::max(0, x - radius), x1 = std::min(w, x + radius + 1);
+      const int y0 = std::max(0, y - radius), y1 = std::min(h, y + radius + 1);
+      const double sum = sat[y1 * size_t(w + 1) + x1] - sat[y0 * size_t(w + 1) + x1] - sat[y1 * size_t(w + 1) + x0] +
+                         sat[y0 * size_t(w + 1) + x0];
+      const double expected = sum / double((x1 - x0) * (y1 - y0));
+      for (int c = 0; c < 3; ++c) image.rgb[3 * (size_t(y) * w + x) + c] *= static_cast<float>(expected / actual);
+    }
 }
 
 }  // namespace relt

@@ -7,7 +7,10 @@
 #include <cstdint>
 
 #include "core/sample_source.h"
+#include <vector>
+
 #include "film/film.h"
+#include "image/image.h"
 #include "path/path_context.h"
 #include "path/splat.h"
 #include "pss/kelemen.h"
@@ -18,6 +21,9 @@ struct ErptSettings {
   int chainLength = 100;          // m
   double depositsPerSeed = 100.0;  // e_d = b / this: on average b / e_d / m = 1 chain per average seed
   KelemenSizes sizes;
+  // Cline et al. Sec. 4.4 consecutive-sample filter (biased, 0 = off): a chain that has stayed on
+  // one pixel for this many mutations stops depositing until it moves to another pixel.
+  int maxConsecutive = 0;
 };
 
 // Path tracing as a function of u; the film position is the first two camera numbers times the
@@ -42,8 +48,15 @@ struct ErptCounters {
 // Seed `sampleIndex` of every pixel of `row`, with its chains, into the film. Each deposit is
 // weighted by filmWeight (1 / seeds per pixel). Keys: (seed, pixel, sampleIndex), so the result
 // does not depend on which rank renders the row.
+// proposals (optional, width x height): tally of proposed mutations per pixel, for the proposal filter.
 ErptCounters erptRow(PtEvaluator& eval, const ErptSettings& settings, double normaliser, uint64_t seed,
-                     uint64_t sampleIndex, int row, double filmWeight, Film& film);
+                     uint64_t sampleIndex, int row, double filmWeight, Film& film,
+                     std::vector<double>* proposals = nullptr);
+
+// Cline et al. Sec. 4.4 proposed-mutations filter (biased): scales each pixel by the box-blurred
+// ((2 radius + 1)^2) count of proposed mutations over its own count. Pixels nothing was proposed
+// to are left unchanged.
+void applyProposalFilter(Image& image, const std::vector<double>& proposals, int radius = 3);
 
 // Mean energy of `count` uniform samples i = first, first + stride, ... (sum, not mean, so ranks
 // can add their shares).

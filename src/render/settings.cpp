@@ -30,6 +30,8 @@ nlohmann::json RenderSettings::toJson() const {
   j["mis"] = heuristic == MisHeuristic::Power ? "power" : "balance";
   if (integrator == Integrator::Erpt) {
     j["chain_length"] = chainLength;
+    if (erptMaxConsecutive > 0) j["max_consecutive"] = erptMaxConsecutive;
+    if (erptProposalFilter) j["proposal_filter"] = true;
     j["small_step"] = {smallStepMin, smallStepMax};
   }
   if (isMarkovChain(integrator)) {

@@ -33,6 +33,8 @@ struct RenderSettings {
   std::optional<double> mutationsPerPixel;  // default 16
   int chains = 256;
   int chainLength = 100;  // erpt: mutations per chain (m)
+  int erptMaxConsecutive = 0;        // erpt consecutive-sample filter (biased; 0 = off)
+  bool erptProposalFilter = false;   // erpt proposed-mutations filter (biased)
   float largeStepProbability = 0.3f;                  // pssmlt, mmlt
   float smallStepMin = 1.0f / 1024, smallStepMax = 1.0f / 64;  // Kelemen small-step sizes s1, s2
   bool kelemenWeights = false;                         // pssmlt: Kelemen's large-step weighting

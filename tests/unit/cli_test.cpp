@@ -49,6 +49,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"KelemenWeightsWithMmlt", "render " + kScene + " -o OUT --integrator mmlt --kelemen-weights", "pssmlt"},
                       BadInvocation{"SmallStepsOutOfOrder", "render " + kScene + " -o OUT --integrator pssmlt --small-step-min 0.1 --small-step-max 0.01", "small-step"},
                       BadInvocation{"LargeStepProbabilityAboveOne", "render " + kScene + " -o OUT --integrator pssmlt --large-step-probability 1.5", "large-step-probability"},
+                      BadInvocation{"ErptFilterWithBdpt", "render " + kScene + " -o OUT --erpt-proposal-filter", "only for erpt"},
                       BadInvocation{"MissingScene", "render /nonexistent.gltf -o OUT", "nonexistent"},
                       BadInvocation{"UnknownIntegrator", "render " + kScene + " -o OUT --integrator magic", "magic"},
                       BadInvocation{"NegativeSpp", "render " + kScene + " -o OUT --spp -3", "spp"},
