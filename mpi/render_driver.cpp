@@ -42,10 +42,15 @@ void checkOutputsWritable(const Session& session, const RenderSettings& s) {
   if (bad) throw InputError("", "", session.isRoot() ? problem : "output not writable");
 }
 
-// EXR, optional PNG and stats (with the wall time added), each written atomically. Root only.
-void writeOutputs(const RenderSettings& settings, const Image& image, nlohmann::json stats, Clock::time_point wallStart) {
+// EXR and optional PNG, each written atomically. Root only.
+void writeImages(const RenderSettings& settings, const Image& image) {
   writeExr(settings.output, image);
   if (!settings.png.empty()) writePng(settings.png, image, settings.exposure);
+}
+
+// The images and the stats (with the wall time added). Root only.
+void writeOutputs(const RenderSettings& settings, const Image& image, nlohmann::json stats, Clock::time_point wallStart) {
+  writeImages(settings, image);
   if (!settings.stats.empty()) {
     stats["wall_seconds"] = since(wallStart);
     writeFileAtomically(settings.stats, stats.dump(2) + "\n");
@@ -106,9 +111,7 @@ void runRender(const Session& session, RenderSettings settings) {
     const auto renderStart = Clock::now();
     int snapshots = 0;
     const PssmltOutcome o = runPssmlt(session, renderer, settings, film, [&](const std::vector<double>& sums, double d) {
-      const Image image = Renderer::resolve(film, sums, d);
-      writeExr(settings.output, image);
-      if (!settings.png.empty()) writePng(settings.png, image, settings.exposure);
+      writeImages(settings, Renderer::resolve(film, sums, d));
       ++snapshots;
     });
     const Gathered g = gatherAfterRender(renderStart, renderer, film);

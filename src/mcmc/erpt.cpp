@@ -52,8 +52,7 @@ float PtEvaluator::operator()(SampleSource& u, PathSample& out) {
   out.clear();
   const float x = u.next(SampleStream::Camera), y = u.next(SampleStream::Camera);
   tracePath(ctx_, Vec2(x * width_, y * height_), u, out);
-  const float e = out.luminanceSum();
-  return std::isfinite(e) && out.finite() ? e : 0.0f;
+  return out.target();
 }
 
 void ErptCounters::add(const ErptCounters& o) {

@@ -15,18 +15,14 @@ float MmltEvaluator::operator()(int depth, SampleSource& u, PathSample& out) {
   const float x = u.next(SampleStream::Camera), y = u.next(SampleStream::Camera);
   if (!bdpt_.traceStrategy(s, t, Vec2(x * width_, y * height_), u, out)) return 0.0f;
   for (Splat& sp : out.splats) sp.value *= static_cast<float>(n);
-  const float target = out.luminanceSum();
-  return std::isfinite(target) && out.finite() ? target : 0.0f;
+  return out.target();
 }
 
 std::vector<double> mmltBootstrapTargets(MmltEvaluator& eval, uint64_t seed, int count, int first, int stride) {
-  std::vector<double> targets(static_cast<size_t>(count), 0.0);
-  PathSample sample;
-  for (int i = first; i < count; i += stride) {
-    IndependentSource u(bootstrapKey(seed, static_cast<uint64_t>(i)));
-    targets[static_cast<size_t>(i)] = eval(mmltDepthOfBootstrap(static_cast<uint64_t>(i), eval.maxDepth()), u, sample);
-  }
-  return targets;
+  auto atItsDepth = [&](uint64_t i, SampleSource& u, PathSample& out) {
+    return eval(mmltDepthOfBootstrap(i, eval.maxDepth()), u, out);
+  };
+  return bootstrapTargets(atItsDepth, seed, count, first, stride);
 }
 
 double mmltNormaliser(const std::vector<double>& targets, int maxDepth, const std::vector<ChainCounters>& perDepth) {

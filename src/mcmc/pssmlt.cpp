@@ -13,13 +13,8 @@ uint64_t bootstrapKey(uint64_t seed, uint64_t index) { return hashKey(seed, kBoo
 uint64_t chainKey(uint64_t seed, uint64_t chain) { return hashKey(seed, kChainPurpose, chain); }
 
 std::vector<double> bootstrapTargets(PssEvaluator& eval, uint64_t seed, int count, int first, int stride) {
-  std::vector<double> targets(static_cast<size_t>(count), 0.0);
-  PathSample sample;
-  for (int i = first; i < count; i += stride) {
-    IndependentSource u(bootstrapKey(seed, static_cast<uint64_t>(i)));
-    targets[static_cast<size_t>(i)] = eval(u, sample);
-  }
-  return targets;
+  return bootstrapTargets([&](uint64_t, SampleSource& u, PathSample& out) { return eval(u, out); }, seed, count, first,
+                          stride);
 }
 
 uint64_t chainMutations(uint64_t total, int chains, int chain) {

@@ -32,8 +32,20 @@ struct PssmltSettings {
 uint64_t bootstrapKey(uint64_t seed, uint64_t index);
 uint64_t chainKey(uint64_t seed, uint64_t chain);
 
-// Targets I(u_i) of the bootstrap samples i = first, first + stride, ... (others left at 0), so
-// that ranks can each fill their share and sum the vectors.
+// Targets of the bootstrap samples i = first, first + stride, ... (others left at 0), so that ranks
+// can each fill their share and sum the vectors. `target(i, u, sample)` evaluates sample i on the
+// independent source u keyed by bootstrapKey(seed, i).
+template <class Target>
+std::vector<double> bootstrapTargets(Target&& target, uint64_t seed, int count, int first, int stride) {
+  std::vector<double> targets(static_cast<size_t>(count), 0.0);
+  PathSample sample;
+  for (int i = first; i < count; i += stride) {
+    IndependentSource u(bootstrapKey(seed, static_cast<uint64_t>(i)));
+    targets[static_cast<size_t>(i)] = target(static_cast<uint64_t>(i), u, sample);
+  }
+  return targets;
+}
+// pssmlt's bootstrap: I(u_i) for every sample.
 std::vector<double> bootstrapTargets(PssEvaluator& eval, uint64_t seed, int count, int first, int stride);
 
 // Chain c runs on rank c mod ranks; it makes an even share of all mutations.

@@ -1,5 +1,6 @@
 #pragma once
 // What one traced sample contributes: a list of splats, each tagged with its path class.
+#include <cmath>
 #include <vector>
 
 #include "core/math.h"
@@ -35,6 +36,12 @@ struct PathSample {
     return true;
   }
   // Scalar target of the Markov chains: I(u) = luminance of all splats.
+  // I(u) for the Markov chains: the luminance sum, or 0 if any splat is not finite (such a sample
+  // is never accepted nor splatted).
+  float target() const {
+    const float sum = luminanceSum();
+    return std::isfinite(sum) && finite() ? sum : 0.0f;
+  }
   float luminanceSum() const {
     float sum = 0.0f;
     for (const Splat& s : splats) sum += luminance(s.value);
