@@ -6,6 +6,7 @@
 
 #include "core/rng.h"
 #include "mcmc/metropolis.h"
+#include "mcmc/pss_evaluator.h"
 #include "path/path_tracer.h"
 #include "pss/primary_sample_vector.h"
 
@@ -13,26 +14,6 @@ namespace relt {
 namespace {
 
 constexpr uint64_t kSeedPurpose = 0xe4b7, kBootstrapPurpose = 0xe4b8;
-
-// A pixel's seed: the film position inside pixel (x, y) as the first two camera numbers, the rest
-// independent; every number handed out is recorded so the seed can become a chain's state.
-class PixelSeedSource final : public SampleSource {
- public:
-  PixelSeedSource(uint64_t key, float u0, float u1) : source_(key), film_{u0, u1} {}
-  float next(SampleStream stream) override {
-    const int s = static_cast<int>(stream);
-    const float v = stream == SampleStream::Camera && values_[s].size() < 2 ? film_[values_[s].size()]
-                                                                             : source_.next(stream);
-    values_[s].push_back(v);
-    return v;
-  }
-  const std::vector<float>& values(int stream) const { return values_[stream]; }
-
- private:
-  IndependentSource source_;
-  float film_[2];
-  std::vector<float> values_[kSampleStreamCount];
-};
 
 // Pixel of a chain state: its first two camera numbers are the film position.
 int64_t pixelOf(const PrimarySampleVector& u, int w, int h) {
@@ -85,14 +66,14 @@ ErptCounters erptRow(PtEvaluator& eval, const ErptSettings& settings, double nor
     const uint64_t key = hashKey(seed, kSeedPurpose, pixel, sampleIndex);
     Rng rng(key, 7);
     const float jx = rng.uniform(), jy = rng.uniform();
-    PixelSeedSource source(key, (x + jx) / w, (row + jy) / h);
+    RecordingSource source(key, Vec2((x + jx) / w, (row + jy) / h));
     const float e = eval(source, seedSample);
     ++counters.seeds;
     const int chains = static_cast<int>(std::floor(rng.uniform() + e / (settings.chainLength * energyPerDeposit)));
     for (int c = 0; c < chains; ++c) {
       ++counters.chains;
       PrimarySampleVector u(hashKey(key, c), settings.sizes);
-      for (int s = 0; s < kSampleStreamCount; ++s) u.setState(static_cast<SampleStream>(s), source.values(s));
+      for (int s = 0; s < kSampleStreamCount; ++s) u.setState(static_cast<SampleStream>(s), source.values(static_cast<SampleStream>(s)));
       current = seedSample;
       float energy = e;
       int64_t currentPixel = pixelOf(u, w, h), lastPixel = -1;

@@ -25,19 +25,25 @@ class PssEvaluator {
 };
 
 // Independent numbers that also keeps what each stream handed out, so that a point of primary
-// sample space found by independent sampling can become a chain's state.
+// sample space found by independent sampling can become a chain's state. With `film`, the first
+// two camera numbers are that film position instead (erpt's per-pixel seeds).
 class RecordingSource final : public SampleSource {
  public:
   explicit RecordingSource(uint64_t key) : source_(key) {}
+  RecordingSource(uint64_t key, const Vec2& film) : source_(key), film_(film), fixedFilm_(true) {}
   float next(SampleStream stream) override {
-    const float v = source_.next(stream);
-    values_[static_cast<int>(stream)].push_back(v);
+    std::vector<float>& values = values_[static_cast<int>(stream)];
+    const bool film = fixedFilm_ && stream == SampleStream::Camera && values.size() < 2;
+    const float v = film ? film_[static_cast<int>(values.size())] : source_.next(stream);
+    values.push_back(v);
     return v;
   }
   const std::vector<float>& values(SampleStream stream) const { return values_[static_cast<int>(stream)]; }
 
  private:
   IndependentSource source_;
+  Vec2 film_{0.0f};
+  bool fixedFilm_ = false;
   std::vector<float> values_[kSampleStreamCount];
 };
 
