@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "mcmc/chain_pool.h"
+#include "mcmc/round_schedule.h"
 #include "render/schedule.h"
 
 namespace relt::mpi {
@@ -56,21 +57,9 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
   ChainPool pool(mmlt ? nullptr : &eval, mmlt ? &mmltEval : nullptr, targets, settings.seed, ps, mine);
   const bool anyChains = allreduceMax(pool.size() > 0 ? 1 : 0) > 0;
 
-  // Rounds: every chain takes `perRound` steps (one mutation per pixel over all chains), so a timed
-  // render and snapshots stop at round boundaries that all ranks agree on.
   const double area = double(settings.width) * settings.height;
-  const uint64_t perRound = std::max<uint64_t>(1, static_cast<uint64_t>(std::llround(area / ps.chains)));
-  const bool timed = settings.seconds.has_value();
-  const uint64_t total = static_cast<uint64_t>(std::llround(ps.mutationsPerPixel * area));
-  auto doneAfter = [&](uint64_t rounds, int c) {
-    const uint64_t r = rounds * perRound;
-    return timed ? r : std::min(r, chainMutations(total, ps.chains, c));
-  };
-  auto mutationsAfter = [&](uint64_t rounds) {
-    uint64_t n = 0;
-    for (int c = 0; c < ps.chains; ++c) n += doneAfter(rounds, c);
-    return n;
-  };
+  const RoundSchedule schedule(area, ps.chains, settings.seconds,
+                               static_cast<uint64_t>(std::llround(ps.mutationsPerPixel * area)));
   auto normaliser = [&](std::vector<ChainCounters>* perDepthOut, ChainCounters* countersOut) {
     std::vector<ChainCounters> perDepth;
     for (const ChainCounters& c : pool.perDepth()) perDepth.push_back(sumOverRanks(c));
@@ -87,12 +76,9 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
   const bool tty = ::isatty(STDERR_FILENO);
   uint64_t rounds = 0;
   for (;;) {
-    const bool more = timed ? startAnotherPass(static_cast<int>(std::min<uint64_t>(rounds, 1)), elapsed, lastRound,
-                                               *settings.seconds)
-                            : mutationsAfter(rounds) < total;
-    if (!more || !anyChains) break;
+    if (!anyChains || !schedule.anotherRound(rounds, elapsed, lastRound)) break;
     std::vector<uint64_t> steps;
-    for (int c : mine) steps.push_back(doneAfter(rounds + 1, c) - doneAfter(rounds, c));
+    for (int c : mine) steps.push_back(schedule.doneAfter(rounds + 1, c) - schedule.doneAfter(rounds, c));
     if (pool.size() > 0) pool.run(steps, film);
     ++rounds;
     const double now = allreduceMax(since(start));
@@ -100,17 +86,16 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
     elapsed = now;
     if (session.isRoot() && elapsed - lastPrint >= 1.0) {
       lastPrint = elapsed;
-      const double done = double(mutationsAfter(rounds));
-      const double fraction = timed ? std::min(1.0, elapsed / *settings.seconds) : done / double(total);
-      std::fprintf(stderr, tty ? "\r%s" : "%s\n", progressLine(fraction, elapsed, done / elapsed, "mutations").c_str());
+      const double rate = double(schedule.mutationsAfter(rounds)) / elapsed;
+      std::fprintf(stderr, tty ? "\r%s" : "%s\n",
+                   progressLine(schedule.fraction(rounds, elapsed), elapsed, rate, "mutations").c_str());
     }
-    if (settings.snapshotEvery > 0.0 && elapsed - lastSnapshot >= settings.snapshotEvery &&
-        (timed ? elapsed + lastRound <= *settings.seconds : mutationsAfter(rounds) < total)) {
+    if (snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, schedule.anotherRound(rounds, elapsed, lastRound))) {
       lastSnapshot = elapsed;
       std::vector<double> sums = film.data();
       reduceSumToRoot(sums);
       const double b = normaliser(nullptr, nullptr);
-      if (session.isRoot()) snapshot(sums, pssmltResolveDivisor(mutationsAfter(rounds), b, area));
+      if (session.isRoot()) snapshot(sums, pssmltResolveDivisor(schedule.mutationsAfter(rounds), b, area));
     }
   }
 
@@ -118,7 +103,7 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
   PssmltOutcome out;
   out.bootstrapSamples = targets.size();
   out.rounds = rounds;
-  out.totalMutations = mutationsAfter(rounds);
+  out.totalMutations = schedule.mutationsAfter(rounds);
   out.normaliser = normaliser(&out.perDepth, &out.counters);
   return out;
 }
