@@ -10,8 +10,8 @@
 #include "core/error.h"
 #include "render/renderer.h"
 #include "erpt_driver.h"
+#include "pass_loop.h"
 #include "pssmlt_driver.h"
-#include "render/schedule.h"
 #include "scene/gltf_loader.h"
 
 namespace relt::mpi {
@@ -166,31 +166,10 @@ void runRender(const Session& session, RenderSettings settings) {
                  static_cast<unsigned long long>(o.counters.mutations), g.renderSeconds, settings.output.c_str());
     return;
   }
-  const int height = settings.height;
-  const bool timed = settings.seconds.has_value();
-  const int spp = settings.spp.value_or(timed ? 0 : 16);
-  const bool tty = ::isatty(STDERR_FILENO);
   const auto renderStart = Clock::now();
-  double lastElapsed = 0.0, lastPass = 0.0, lastPrint = 0.0;
-  int passes = 0;
-  for (;;) {
-    if (timed ? !startAnotherPass(passes, lastElapsed, lastPass, *settings.seconds) : passes >= spp) break;
-    for (int row = 0; row < height; ++row)
-      if (ownsUnit(static_cast<uint64_t>(passes), row, height, session.rank(), session.size()))
-        renderer.renderRow(static_cast<uint64_t>(passes), row, film);
-    ++passes;
-    // A timed render agrees on the elapsed time every pass so all ranks stop after the same pass.
-    const double elapsed = timed ? allreduceMax(since(renderStart)) : since(renderStart);
-    lastPass = elapsed - lastElapsed;
-    lastElapsed = elapsed;
-    if (session.isRoot() && (elapsed - lastPrint >= 1.0)) {
-      lastPrint = elapsed;
-      const double fraction = timed ? std::min(1.0, elapsed / *settings.seconds) : double(passes) / spp;
-      const double rate = double(renderer.samples()) * session.size() / std::max(elapsed, 1e-9);
-      std::fprintf(stderr, tty ? "\r%s" : "%s\n", progressLine(fraction, elapsed, rate).c_str());
-    }
-  }
-  if (session.isRoot() && tty) std::fprintf(stderr, "\n");
+  const int passes = runPasses(
+      session, settings, [&](uint64_t pass, int row) { renderer.renderRow(pass, row, film); },
+      [&](double elapsed) { return double(renderer.samples()) * session.size() / std::max(elapsed, 1e-9); });
   const uint64_t samples = allreduceSum(renderer.samples());
   const Gathered g = gatherAfterRender(renderStart, renderer, film);
   if (!session.isRoot()) return;

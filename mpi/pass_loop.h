@@ -1,0 +1,19 @@
+#pragma once
+// The pass loop of the per-pixel integrators (pt, bdpt, erpt): pass k renders the work units
+// (k, row) this rank owns; --spp N runs N passes, --time decides collectively after each pass.
+#include <functional>
+#include <string>
+
+#include "comm.h"
+#include "render/settings.h"
+
+namespace relt::mpi {
+
+// Calls renderUnit(pass, row) for every owned unit of every pass and returns the number of passes.
+// If rate is given, the root prints a progress line at most once a second with rate(elapsed)
+// samples per second.
+int runPasses(const Session& session, const RenderSettings& settings,
+              const std::function<void(uint64_t pass, int row)>& renderUnit,
+              const std::function<double(double elapsed)>& rate = {});
+
+}  // namespace relt::mpi
