@@ -7,10 +7,11 @@ namespace relt {
 
 // a = min(1, target(proposal) / target(current)); a state of zero target is left at once (a = 1).
 // A proposal with a zero, negative or non-finite target is never accepted.
-inline float acceptance(float current, float proposal) {
-  if (!(proposal > 0.0f) || !std::isfinite(proposal)) return 0.0f;
-  if (!(current > 0.0f)) return 1.0f;
-  return std::min(1.0f, proposal / current);
+template <class Real>
+inline Real acceptance(Real current, Real proposal) {
+  if (!(proposal > Real(0)) || !std::isfinite(proposal)) return Real(0);
+  if (!(current > Real(0))) return Real(1);
+  return std::min(Real(1), proposal / current);
 }
 
 }  // namespace relt
