@@ -24,6 +24,12 @@ class PrimarySampleVector final : public SampleSource {
 
   // Starts the next proposal: a large step (every coordinate fresh) or a small step.
   void startIteration(bool largeStep);
+  // Small-step sizes from now on (a replica chain changes them with its level). Coordinates that
+  // missed steps catch up with the new sizes: still a symmetric move.
+  void setSizes(const KelemenSizes& sizes) {
+    sizes_ = sizes;
+    step_ = KelemenStep(sizes);
+  }
   // Keeps the proposal as the new state.
   void accept();
   // Restores the state before the proposal, exactly.

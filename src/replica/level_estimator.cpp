@@ -1,0 +1,32 @@
+#include "replica/level_estimator.h"
+
+#include <array>
+#include <cmath>
+
+namespace relt {
+
+double LevelEstimator::classFactor(const double* q, int level, int cls) const {
+  if (!family_.estimates(level, cls)) return 0.0;
+  auto density = [&](int l) {
+    const double p = b_[size_t(l)] > 0.0 ? q[l] / b_[size_t(l)] : 0.0;
+    return beta_ == 1.0 ? p : std::pow(p, beta_);
+  };
+  double sum = 0.0;
+  for (int l = 0; l < family_.levels(); ++l)
+    if (family_.estimates(l, cls)) sum += density(l);
+  if (!(sum > 0.0)) return 0.0;
+  const double own = b_[size_t(level)] > 0.0 ? q[level] / b_[size_t(level)] : 0.0;
+  return (beta_ == 1.0 ? 1.0 : std::pow(own, beta_ - 1.0)) / sum;
+}
+
+void LevelEstimator::splat(const PathSample& sample, const double* q, int level, double e, Film& film) const {
+  if (!(e > 0.0) || sample.splats.empty()) return;
+  std::array<double, kPathClassCount> factor;
+  for (int n = 0; n < kPathClassCount; ++n) factor[size_t(n)] = e * classFactor(q, level, n);
+  for (const Splat& s : sample.splats) {
+    const double f = factor[static_cast<size_t>(s.cls)];
+    if (f > 0.0) film.addSplat(s.film, s.value, f);
+  }
+}
+
+}  // namespace relt

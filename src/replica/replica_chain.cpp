@@ -1,0 +1,90 @@
+#include "replica/replica_chain.h"
+
+#include "mcmc/metropolis.h"
+
+namespace relt {
+namespace {
+constexpr uint64_t kReplicaChainPurpose = 0x4e1a;
+uint64_t replicaChainKey(uint64_t seed, int chain) { return hashKey(seed, kReplicaChainPurpose, uint64_t(chain)); }
+using Clock = std::chrono::steady_clock;
+}  // namespace
+
+void LevelCounters::add(const LevelCounters& o) {
+  smallProposed += o.smallProposed;
+  smallAccepted += o.smallAccepted;
+  largeProposed += o.largeProposed;
+  largeAccepted += o.largeAccepted;
+  invalidProposals += o.invalidProposals;
+  nonFinite += o.nonFinite;
+  seconds += o.seconds;
+}
+
+bool LevelEvaluator::operator()(SampleSource& u, PathSample& out, double* q) const {
+  eval_(u, out);
+  const bool finite = out.finite();
+  if (finite) {
+    family_.targets(classLuminance(out), q);
+  } else {
+    for (int k = 0; k < family_.levels(); ++k) q[k] = 0.0;
+  }
+  return finite;
+}
+
+ReplicaChain::ReplicaChain(uint64_t seed, int chain, int level, const LevelFamily& family)
+    : family_(family),
+      u_(replicaChainKey(seed, chain), family.sizes(level)),
+      rng_(replicaChainKey(seed, chain), 1),
+      level_(level),
+      counters_(size_t(family.levels())) {
+  current_.q.assign(size_t(family.levels()), 0.0);
+  proposal_.q.assign(size_t(family.levels()), 0.0);
+}
+
+void ReplicaChain::setLevel(int level) {
+  if (level == level_) return;
+  level_ = level;
+  u_.setSizes(family_.sizes(level));
+}
+
+void ReplicaChain::start(const LevelEvaluator& eval, uint64_t key) {
+  RecordingSource source(key);
+  eval(source, current_.path, current_.q.data());
+  for (int s = 0; s < kSampleStreamCount; ++s)
+    u_.setState(static_cast<SampleStream>(s), source.values(static_cast<SampleStream>(s)));
+}
+
+void ReplicaChain::run(uint64_t steps, const LevelEvaluator& eval, const LevelEstimator& estimator, Film& film,
+                       LargeStepSums& large) {
+  const auto t0 = Clock::now();
+  for (uint64_t i = 0; i < steps; ++i) step(eval, estimator, film, large);
+  counters_[size_t(level_)].seconds += std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+void ReplicaChain::step(const LevelEvaluator& eval, const LevelEstimator& estimator, Film& film,
+                        LargeStepSums& large) {
+  const size_t k = size_t(level_);
+  const bool isLarge = rng_.uniform() < family_.largeStepProbability(level_);
+  u_.startIteration(isLarge);
+  const bool finite = eval(u_, proposal_.path, proposal_.q.data());
+  LevelCounters& c = counters_[k];
+  if (!finite) ++c.nonFinite;
+  (isLarge ? c.largeProposed : c.smallProposed)++;
+  if (isLarge) {
+    for (size_t l = 0; l < proposal_.q.size(); ++l) large.sum[l] += proposal_.q[l];
+    ++large.count;
+  }
+  const double a = acceptance(current_.q[k], proposal_.q[k]);
+  if (!(proposal_.q[k] > 0.0)) ++c.invalidProposals;
+  // Expected values: the current state with 1 - a, the proposal with a (thesis digest §2.7).
+  if (current_.q[k] > 0.0 && a < 1.0) estimator.splat(current_.path, current_.q.data(), level_, 1.0 - a, film);
+  if (a > 0.0) estimator.splat(proposal_.path, proposal_.q.data(), level_, a, film);
+  if (rng_.uniformDouble() < a) {
+    u_.accept();
+    std::swap(current_, proposal_);
+    (isLarge ? c.largeAccepted : c.smallAccepted)++;
+  } else {
+    u_.reject();
+  }
+}
+
+}  // namespace relt

@@ -1,0 +1,80 @@
+#pragma once
+// One Markov chain of a ladder (DESIGN §3.2): a point of primary sample space, the level it
+// currently holds, its traced path and that path's targets under every level. A step is a
+// Metropolis-Hastings step on q_level with Kelemen mutations; both states are splatted through the
+// level estimator with expected-value weights. Levels change only between rounds, by exchanges.
+#include <chrono>
+#include <cstdint>
+#include <vector>
+
+#include "core/rng.h"
+#include "core/sampling.h"
+#include "mcmc/pss_evaluator.h"
+#include "pss/primary_sample_vector.h"
+#include "replica/level_estimator.h"
+
+namespace relt {
+
+// What a ladder's chains count per level (summed over chains by level held at the time).
+struct LevelCounters {
+  uint64_t smallProposed = 0, smallAccepted = 0, largeProposed = 0, largeAccepted = 0;
+  uint64_t invalidProposals = 0;  // zero target at the chain's level, or a non-finite path
+  uint64_t nonFinite = 0;         // proposals with a NaN or infinite splat (dropped, never splatted)
+  double seconds = 0.0;           // time spent stepping at this level
+  void add(const LevelCounters& o);
+};
+
+// Large steps are uniform samples of primary sample space: they refine every level's b.
+struct LargeStepSums {
+  explicit LargeStepSums(int levels = 0) : sum(size_t(levels), 0.0) {}
+  std::vector<double> sum;
+  uint64_t count = 0;
+};
+
+// Evaluates one point of primary sample space: the path's splats and every level's target.
+// Targets are all 0 when the path is not finite (never accepted, never splatted); returns false then.
+class LevelEvaluator {
+ public:
+  LevelEvaluator(PssEvaluator& eval, const LevelFamily& family) : eval_(eval), family_(family) {}
+  bool operator()(SampleSource& u, PathSample& out, double* q) const;
+  const LevelFamily& family() const { return family_; }
+
+ private:
+  PssEvaluator& eval_;
+  const LevelFamily& family_;
+};
+
+class ReplicaChain {
+ public:
+  ReplicaChain(uint64_t seed, int chain, int level, const LevelFamily& family);
+
+  // Picks a bootstrap sample in proportion to its level's target (start-up bias elimination).
+  size_t pickBootstrap(const Distribution1D& bootstrap) { return bootstrap.sample(rng_.uniform()); }
+  // Starts at the point an independent source with `key` produces (a regenerated bootstrap sample).
+  void start(const LevelEvaluator& eval, uint64_t key);
+  // `steps` Metropolis steps at the current level.
+  void run(uint64_t steps, const LevelEvaluator& eval, const LevelEstimator& estimator, Film& film,
+           LargeStepSums& large);
+
+  int level() const { return level_; }
+  void setLevel(int level);
+  // Every level's target on the current state.
+  const double* targets() const { return current_.q.data(); }
+  const std::vector<LevelCounters>& counters() const { return counters_; }
+
+ private:
+  struct State {
+    PathSample path;
+    std::vector<double> q;
+  };
+  void step(const LevelEvaluator& eval, const LevelEstimator& estimator, Film& film, LargeStepSums& large);
+
+  const LevelFamily& family_;
+  PrimarySampleVector u_;
+  Rng rng_;
+  int level_;
+  State current_, proposal_;
+  std::vector<LevelCounters> counters_;
+};
+
+}  // namespace relt

@@ -1,0 +1,173 @@
+#include "replica/replica_pool.h"
+
+#include <algorithm>
+
+#include "mcmc/pssmlt.h"
+
+namespace relt {
+namespace {
+
+constexpr uint64_t kExchangePurpose = 0xe8c4;
+
+double meanTarget(const std::vector<double>& luminance) {
+  const size_t samples = luminance.size() / kPathClassCount;
+  double sum = 0.0;
+  for (double v : luminance) sum += v;
+  return samples ? sum / double(samples) : 0.0;
+}
+
+ClassLuminance sampleLuminance(const std::vector<double>& luminance, size_t i) {
+  ClassLuminance L;
+  std::copy_n(luminance.begin() + static_cast<std::ptrdiff_t>(i * kPathClassCount), kPathClassCount, L.begin());
+  return L;
+}
+
+}  // namespace
+
+std::vector<double> bootstrapClassLuminance(PssEvaluator& eval, uint64_t seed, int count, int first, int stride) {
+  std::vector<double> out(size_t(count) * kPathClassCount, 0.0);
+  PathSample sample;
+  for (int i = first; i < count; i += stride) {
+    IndependentSource u(bootstrapKey(seed, uint64_t(i)));
+    eval(u, sample);
+    const ClassLuminance L = classLuminance(sample);
+    std::copy(L.begin(), L.end(), out.begin() + static_cast<std::ptrdiff_t>(size_t(i) * kPathClassCount));
+  }
+  return out;
+}
+
+ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, uint64_t seed,
+                         const std::vector<double>& bootstrapLuminance, int rank, int ranks)
+    : settings_(settings),
+      seed_(seed),
+      rank_(rank),
+      ranks_(ranks),
+      family_(settings.family, meanTarget(bootstrapLuminance)),
+      estimator_(family_, settings.beta),
+      evaluator_(eval, family_),
+      tally_(family_.levels()),
+      trips_(settings.ladders * family_.levels(), family_.levels()) {
+  const int m = levels();
+  const size_t samples = bootstrapLuminance.size() / kPathClassCount;
+  // Every level's targets on the bootstrap: its normaliser and its starting distribution.
+  std::vector<std::vector<double>> q(static_cast<size_t>(m), std::vector<double>(samples));
+  std::vector<double> qi(static_cast<size_t>(m));
+  bootstrapSum_.assign(size_t(m), 0.0);
+  for (size_t i = 0; i < samples; ++i) {
+    family_.targets(sampleLuminance(bootstrapLuminance, i), qi.data());
+    for (int k = 0; k < m; ++k) {
+      q[size_t(k)][i] = qi[size_t(k)];
+      bootstrapSum_[size_t(k)] += qi[size_t(k)];
+    }
+  }
+  bootstrapCount_ = double(samples);
+  largeSum_.assign(size_t(m), 0.0);
+  pendingLarge_ = LargeStepSums(m);
+  std::vector<double> b(static_cast<size_t>(m));
+  for (int k = 0; k < m; ++k) b[size_t(k)] = samples ? bootstrapSum_[size_t(k)] / double(samples) : 0.0;
+  estimator_.setNormalisers(b);
+
+  levelOf_.resize(size_t(chainCount()));
+  for (int c = 0; c < chainCount(); ++c) {
+    levelOf_[size_t(c)] = c % m;
+    trips_.visit(c, c % m);
+  }
+  // Nothing visible (I = 0 everywhere the bootstrap looked): no chain runs, the image stays black.
+  active_ = meanTarget(bootstrapLuminance) > 0.0;
+  if (!active_) return;
+  std::vector<Distribution1D> start;
+  for (int k = 0; k < m; ++k) {
+    // A level whose target the bootstrap never saw starts anywhere (its chain wanders to q > 0).
+    start.emplace_back(bootstrapSum_[size_t(k)] > 0.0 ? q[size_t(k)] : std::vector<double>(samples, 1.0));
+  }
+  hosted_ = hostedBy(rank_);
+  chains_.reserve(hosted_.size());
+  for (int c : hosted_) {
+    ReplicaChain& chain = chains_.emplace_back(seed, c, c % m, family_);
+    const size_t index = chain.pickBootstrap(start[size_t(c % m)]);
+    chain.start(evaluator_, bootstrapKey(seed, index));
+  }
+}
+
+std::vector<int> ReplicaPool::hostedBy(int rank) const {
+  std::vector<int> out;
+  for (int c = 0; c < chainCount(); ++c)
+    if (chainRank(c, levels(), ranks_, settings_.placement) == rank) out.push_back(c);
+  return out;
+}
+
+void ReplicaPool::runRound(uint64_t steps, std::vector<Film>& films) {
+  for (ReplicaChain& chain : chains_) {
+    Film& film = films.size() > 1 ? films[size_t(chain.level())] : films[0];
+    chain.run(steps, evaluator_, estimator_, film, pendingLarge_);
+  }
+}
+
+size_t ReplicaPool::messageLength(int rank) const {
+  return active_ ? hostedBy(rank).size() * size_t(levels()) + size_t(levels()) + 2 : 2;
+}
+
+std::vector<double> ReplicaPool::roundMessage(double elapsed) {
+  std::vector<double> msg;
+  msg.reserve(messageLength(rank_));
+  if (active_) {
+    for (const ReplicaChain& chain : chains_) msg.insert(msg.end(), chain.targets(), chain.targets() + levels());
+    msg.insert(msg.end(), pendingLarge_.sum.begin(), pendingLarge_.sum.end());
+  }
+  msg.push_back(double(pendingLarge_.count));
+  msg.push_back(elapsed);
+  pendingLarge_ = LargeStepSums(levels());
+  return msg;
+}
+
+double ReplicaPool::finishRound(const std::vector<std::vector<double>>& messages, uint64_t round) {
+  const int m = levels();
+  double elapsed = 0.0;
+  for (const std::vector<double>& msg : messages) elapsed = std::max(elapsed, msg.back());
+  if (!active_) return elapsed;
+
+  // Every chain's targets, by global id, and the large-step sums.
+  std::vector<const double*> targetsOf(size_t(chainCount()), nullptr);
+  for (int r = 0; r < int(messages.size()); ++r) {
+    const std::vector<double>& msg = messages[size_t(r)];
+    const std::vector<int> ids = hostedBy(r);
+    for (size_t i = 0; i < ids.size(); ++i) targetsOf[size_t(ids[i])] = msg.data() + i * size_t(m);
+    const double* large = msg.data() + ids.size() * size_t(m);
+    for (int k = 0; k < m; ++k) largeSum_[size_t(k)] += large[k];
+    largeCount_ += large[m];
+  }
+
+  // Each ladder: Q(i, j) = q_i(state held by level j), one exchange, new labels.
+  std::vector<int> holder(static_cast<size_t>(m));
+  for (int ladder = 0; ladder < settings_.ladders; ++ladder) {
+    const int first = ladder * m;
+    for (int c = first; c < first + m; ++c) holder[size_t(levelOf_[size_t(c)])] = c;
+    TargetMatrix q(m);
+    for (int i = 0; i < m; ++i)
+      for (int j = 0; j < m; ++j) q(i, j) = targetsOf[size_t(holder[size_t(j)])][i];
+    Rng rng(hashKey(seed_, kExchangePurpose, uint64_t(ladder), round));
+    const std::vector<int> from = exchangeLevels(settings_.exchange, q, round, rng, &tally_);
+    for (int i = 0; i < m; ++i) {
+      const int c = holder[size_t(from[size_t(i)])];
+      levelOf_[size_t(c)] = i;
+      trips_.visit(c, i);
+    }
+  }
+  for (size_t i = 0; i < chains_.size(); ++i) chains_[i].setLevel(levelOf_[size_t(hosted_[i])]);
+
+  // Normalisers from the bootstrap and every large step so far, frozen until the next round.
+  std::vector<double> b(static_cast<size_t>(m));
+  const double n = bootstrapCount_ + largeCount_;
+  for (int k = 0; k < m; ++k) b[size_t(k)] = n > 0.0 ? (bootstrapSum_[size_t(k)] + largeSum_[size_t(k)]) / n : 0.0;
+  estimator_.setNormalisers(b);
+  return elapsed;
+}
+
+std::vector<LevelCounters> ReplicaPool::hostedCounters() const {
+  std::vector<LevelCounters> total(static_cast<size_t>(levels()));
+  for (const ReplicaChain& chain : chains_)
+    for (int k = 0; k < levels(); ++k) total[size_t(k)].add(chain.counters()[size_t(k)]);
+  return total;
+}
+
+}  // namespace relt

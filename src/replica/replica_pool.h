@@ -1,0 +1,80 @@
+#pragma once
+// Replica exchange light transport (`relt`): C = L ladders x M levels chains, chain c in ladder
+// c / M starting at level c mod M. A rank hosts some chains (placement), steps them for a round,
+// and contributes one message to the round's one collective: its chains' targets under every
+// level, its large-step sums and its elapsed time. From all messages every rank runs the same
+// exchange per ladder (a per-ladder stream keyed by seed, ladder and round) and updates every
+// chain's level label; states never move. Rank-agnostic: the image depends on (seed, L, M, steps).
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "film/film.h"
+#include "replica/exchange.h"
+#include "replica/family.h"
+#include "replica/level_estimator.h"
+#include "replica/replica_settings.h"
+#include "replica/replica_chain.h"
+
+namespace relt {
+
+// Class luminances of bootstrap samples first, first + stride, ... (kPathClassCount per sample,
+// others 0), for ranks to fill their share and sum.
+std::vector<double> bootstrapClassLuminance(PssEvaluator& eval, uint64_t seed, int count, int first, int stride);
+
+class ReplicaPool {
+ public:
+  // `bootstrapLuminance` holds every bootstrap sample's class luminances (summed over ranks).
+  ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, uint64_t seed,
+              const std::vector<double>& bootstrapLuminance, int rank, int ranks);
+  ReplicaPool(const ReplicaPool&) = delete;  // chains refer to family_
+  ReplicaPool& operator=(const ReplicaPool&) = delete;
+
+  const LevelFamily& family() const { return family_; }
+  const LevelEstimator& estimator() const { return estimator_; }
+  int levels() const { return family_.levels(); }
+  int chainCount() const { return settings_.ladders * levels(); }
+  // False when no bootstrap sample saw light: the image is black and no chain runs.
+  bool active() const { return active_; }
+
+  // Steps every hosted chain `steps` times. films: one, or one per level (per-level layers).
+  void runRound(uint64_t steps, std::vector<Film>& films);
+  // This rank's message for the round's collective, and the length any rank's message has.
+  std::vector<double> roundMessage(double elapsed);
+  size_t messageLength(int rank) const;
+  // Reads every rank's message (rank order): exchanges in every ladder, new level labels, new
+  // normalisers. Returns the largest elapsed time of the messages.
+  double finishRound(const std::vector<std::vector<double>>& messages, uint64_t round);
+
+  // Diagnostics. Exchange tallies and round trips are the same on every rank; level counters
+  // cover the hosted chains (the MPI layer sums them).
+  const ExchangeTally& tally() const { return tally_; }
+  const RoundTrips& roundTrips() const { return trips_; }
+  std::vector<LevelCounters> hostedCounters() const;
+  const std::vector<double>& normalisers() const { return estimator_.normalisers(); }
+  int levelOf(int chain) const { return levelOf_[size_t(chain)]; }
+
+ private:
+  std::vector<int> hostedBy(int rank) const;
+
+  ReplicaSettings settings_;
+  uint64_t seed_;
+  int rank_, ranks_;
+  LevelFamily family_;
+  LevelEstimator estimator_;
+  LevelEvaluator evaluator_;
+  bool active_ = false;
+  std::vector<int> hosted_;             // global ids of this rank's chains
+  std::vector<ReplicaChain> chains_;    // in hosted_ order
+  std::vector<int> levelOf_;            // every chain's level (kept identical on every rank)
+  std::vector<double> bootstrapSum_;    // sum of q_k over the bootstrap
+  double bootstrapCount_ = 0.0;
+  std::vector<double> largeSum_;        // all ranks' large-step sums so far
+  double largeCount_ = 0.0;
+  LargeStepSums pendingLarge_;          // this rank's, since its last message
+  ExchangeTally tally_;
+  RoundTrips trips_;
+};
+
+}  // namespace relt

@@ -1,0 +1,40 @@
+#pragma once
+// Options of the replica-exchange integrator and where its chains live (DESIGN §4).
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "replica/exchange.h"
+#include "replica/family.h"
+
+namespace relt {
+
+enum class Placement : uint8_t {
+  Spread,  // chain c on rank c mod P: every rank holds a mix of levels (balanced work)
+  Packed,  // ladder l on rank l mod P: whole ladders per rank, exchanges stay local
+};
+
+inline std::optional<Placement> parsePlacement(std::string_view name) {
+  if (name == "spread") return Placement::Spread;
+  if (name == "packed") return Placement::Packed;
+  return std::nullopt;
+}
+inline const char* placementName(Placement placement) { return placement == Placement::Spread ? "spread" : "packed"; }
+
+// The rank that hosts chain c (ladder c / levels).
+inline int chainRank(int chain, int levels, int ranks, Placement placement) {
+  return placement == Placement::Spread ? chain % ranks : (chain / levels) % ranks;
+}
+
+struct ReplicaSettings {
+  FamilySettings family;
+  int ladders = 32;
+  ExchangeOptions exchange;
+  int exchangeInterval = 16;  // steps per chain between exchanges
+  Placement placement = Placement::Spread;
+  double beta = 1.0;          // MIS over levels: 1 balance, 2 power heuristic
+  int bootstrap = 100000;
+  bool perLevel = false;      // also write each level's MIS-weighted contribution as an EXR layer
+};
+
+}  // namespace relt

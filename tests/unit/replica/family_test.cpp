@@ -1,0 +1,107 @@
+// Target families and the MIS over levels: the targets each family defines, which levels estimate
+// which class, and that the level weights of every class sum to one.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "replica/family.h"
+#include "replica/level_estimator.h"
+
+using namespace relt;
+
+namespace {
+FamilySettings kitaokaSettings() {
+  FamilySettings s;
+  s.kind = FamilyKind::Kitaoka;
+  s.kitaokaDelta = 0.5;
+  return s;
+}
+const ClassLuminance kL = {1.0, 2.0, 4.0, 8.0, 16.0, 32.0};
+}  // namespace
+
+TEST(ClassLuminance, SumsEachClassAndZeroesANonFinitePath) {
+  PathSample p;
+  p.add({0, 0}, Color(1.0f), PathClass::L2);
+  p.add({0, 0}, Color(2.0f), PathClass::L2);
+  p.add({0, 0}, Color(3.0f), PathClass::L5);
+  const ClassLuminance L = classLuminance(p);
+  EXPECT_NEAR(L[2], 3.0, 1e-6);
+  EXPECT_NEAR(L[5], 3.0, 1e-6);
+  EXPECT_EQ(L[0], 0.0);
+  p.add({0, 0}, Color(NAN), PathClass::L1);
+  for (double v : classLuminance(p)) EXPECT_EQ(v, 0.0);
+}
+
+TEST(LevelFamily, KitaokaLevelsAreSpecificIndirectFullUniform) {
+  const LevelFamily f(kitaokaSettings(), 123.0);
+  ASSERT_EQ(f.levels(), 4);
+  double q[4];
+  f.targets(kL, q);
+  EXPECT_DOUBLE_EQ(q[0], 1.0 + 0.5 * 32.0);            // L0 + delta L5
+  EXPECT_DOUBLE_EQ(q[1], 1.0 + 8.0 + 16.0 + 32.0);     // L0 + L3 + L4 + L5
+  EXPECT_DOUBLE_EQ(q[2], 1.0 + 4.0 + 8.0 + 16.0 + 32.0);  // all but L1
+  EXPECT_DOUBLE_EQ(q[3], 1.0);                          // uniform
+  EXPECT_EQ(f.largeStepProbability(3), 1.0f);
+  for (int n = 0; n < kPathClassCount; ++n) {
+    EXPECT_EQ(f.estimates(0, n), n == 0) << "only the specific level estimates L0";
+    for (int k = 1; k < 4; ++k) EXPECT_EQ(f.estimates(k, n), n != 0);
+  }
+  EXPECT_FLOAT_EQ(f.sizes(1).s2, 16.0f * f.sizes(1).s1);
+  EXPECT_LT(f.sizes(0).s1, f.sizes(1).s1);
+}
+
+TEST(LevelFamily, RelaxedEpsGrowGeometricallyWithTheMeanTarget) {
+  FamilySettings s;
+  s.levels = 4;
+  s.relaxedEps1 = 0.1;
+  s.relaxedRatio = 3.0;
+  const LevelFamily f(s, 2.0);
+  double q[4];
+  f.targets(kL, q);
+  const double I = 63.0;
+  EXPECT_DOUBLE_EQ(q[0], I);
+  EXPECT_DOUBLE_EQ(q[1], I + 0.2);
+  EXPECT_DOUBLE_EQ(q[2], I + 0.6);
+  EXPECT_NEAR(q[3], I + 1.8, 1e-12);
+  for (int k = 0; k < 4; ++k)
+    for (int n = 0; n < kPathClassCount; ++n) EXPECT_TRUE(f.estimates(k, n));
+}
+
+// For each class, sum over the levels that estimate it of classFactor * (q_k / b_k) = 1: the MIS
+// weights w_k = classFactor * density_k form a partition of unity, for balance and power heuristics.
+TEST(LevelEstimator, WeightsOfEveryClassSumToOne) {
+  for (double beta : {1.0, 2.0}) {
+    for (bool kitaoka : {false, true}) {
+      FamilySettings s = kitaoka ? kitaokaSettings() : FamilySettings{};
+      const LevelFamily f(s, 3.0);
+      LevelEstimator e(f, beta);
+      std::vector<double> b(static_cast<size_t>(f.levels()));
+      for (int k = 0; k < f.levels(); ++k) b[size_t(k)] = 0.5 + k;
+      e.setNormalisers(b);
+      std::vector<double> q(static_cast<size_t>(f.levels()));
+      f.targets(kL, q.data());
+      for (int n = 0; n < kPathClassCount; ++n) {
+        double sum = 0.0;
+        for (int k = 0; k < f.levels(); ++k) sum += e.classFactor(q.data(), k, n) * q[size_t(k)] / b[size_t(k)];
+        EXPECT_NEAR(sum, 1.0, 1e-12) << "beta " << beta << " kitaoka " << kitaoka << " class " << n;
+      }
+    }
+  }
+}
+
+TEST(LevelEstimator, SplatsEachClassWithItsFactor) {
+  const LevelFamily f(kitaokaSettings(), 1.0);
+  LevelEstimator e(f, 1.0);
+  e.setNormalisers({1.0, 1.0, 1.0, 1.0});
+  PathSample p;
+  p.add({0.5f, 0.5f}, Color(1.0f), PathClass::L0);
+  p.add({1.5f, 0.5f}, Color(1.0f), PathClass::L2);
+  double q[4];
+  f.targets(classLuminance(p), q);
+  Film film(2, 1);
+  e.splat(p, q, 0, 1.0, film);  // the specific level: its L0 splat only
+  EXPECT_NEAR(film.data()[0], 1.0 / q[0], 1e-6);
+  EXPECT_EQ(film.data()[3], 0.0);
+  e.splat(p, q, 2, 0.5, film);  // the full level: its L2 splat, weighted over indirect, full, uniform
+  EXPECT_NEAR(film.data()[3], 0.5 / (q[1] + q[2] + q[3]), 1e-6);
+}

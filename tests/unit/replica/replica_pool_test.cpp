@@ -1,0 +1,90 @@
+// A rank's replica pool and the round protocol, with ranks simulated in one process: one rank and
+// two ranks (each with its share of chains, exchanging messages) give the same levels and image.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/renderer.h"
+#include "replica/replica_pool.h"
+#include "scene/gltf_loader.h"
+#include "test_support.h"
+
+using namespace relt;
+
+namespace {
+
+struct Fixture {
+  Fixture() {
+    RenderSettings s;
+    s.integrator = Integrator::Relt;
+    s.width = 16;
+    s.height = 12;
+    renderer = std::make_unique<Renderer>(loadGltf(test::sourcePath("scenes/cornell-box.gltf")), s);
+    eval = std::make_unique<PssEvaluator>(renderer->context(), 16, 12);
+    settings.ladders = 3;
+    settings.family.levels = 5;
+    settings.exchange.move = ExchangeMove::Permutation;
+    settings.bootstrap = 4000;
+  }
+  std::unique_ptr<Renderer> renderer;
+  std::unique_ptr<PssEvaluator> eval;
+  ReplicaSettings settings;
+};
+
+double sum(const std::vector<Film>& films) {
+  double s = 0.0;
+  for (const Film& f : films)
+    for (double v : f.data()) s += v;
+  return s;
+}
+
+}  // namespace
+
+TEST(ReplicaPool, TwoSimulatedRanksGiveTheLevelsAndImageOfOne) {
+  for (Placement placement : {Placement::Spread, Placement::Packed}) {
+    Fixture fx;
+    fx.settings.placement = placement;
+    const std::vector<double> lum = bootstrapClassLuminance(*fx.eval, 5, fx.settings.bootstrap, 0, 1);
+    ReplicaPool one(*fx.eval, fx.settings, 5, lum, 0, 1);
+    ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
+    ASSERT_TRUE(one.active());
+    std::vector<Film> f1(1, Film(16, 12)), fa(1, Film(16, 12)), fb(1, Film(16, 12));
+    for (uint64_t r = 0; r < 12; ++r) {
+      one.runRound(4, f1);
+      one.finishRound({one.roundMessage(0.0)}, r);
+      a.runRound(4, fa);
+      b.runRound(4, fb);
+      const std::vector<std::vector<double>> messages = {a.roundMessage(1.0), b.roundMessage(2.0)};
+      EXPECT_EQ(messages[0].size(), a.messageLength(0));
+      EXPECT_EQ(messages[1].size(), a.messageLength(1));
+      EXPECT_EQ(a.finishRound(messages, r), 2.0) << "the largest elapsed time";
+      b.finishRound(messages, r);
+      for (int c = 0; c < one.chainCount(); ++c) {
+        ASSERT_EQ(one.levelOf(c), a.levelOf(c)) << "chain " << c << " round " << r;
+        ASSERT_EQ(one.levelOf(c), b.levelOf(c));
+      }
+    }
+    // Every ladder's levels are a permutation of 0..M-1.
+    for (int ladder = 0; ladder < 3; ++ladder) {
+      std::vector<int> levels;
+      for (int c = ladder * 5; c < ladder * 5 + 5; ++c) levels.push_back(one.levelOf(c));
+      std::sort(levels.begin(), levels.end());
+      EXPECT_EQ(levels, (std::vector<int>{0, 1, 2, 3, 4}));
+    }
+    EXPECT_GT(one.tally().rounds, 0u);
+    const double s1 = sum(f1), s2 = sum(fa) + sum(fb);
+    EXPECT_GT(s1, 0.0);
+    EXPECT_NEAR(s1, s2, 1e-9 * s1) << placementName(placement);
+    for (size_t k = 0; k < one.normalisers().size(); ++k)
+      EXPECT_NEAR(one.normalisers()[k], a.normalisers()[k], 1e-12 * one.normalisers()[k]);
+  }
+}
+
+TEST(ReplicaPool, ADarkSceneRunsNoChains) {
+  Fixture fx;
+  const std::vector<double> dark(size_t(fx.settings.bootstrap) * kPathClassCount, 0.0);
+  ReplicaPool pool(*fx.eval, fx.settings, 5, dark, 0, 1);
+  EXPECT_FALSE(pool.active());
+  EXPECT_EQ(pool.messageLength(0), 2u);
+}
