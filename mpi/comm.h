@@ -37,4 +37,7 @@ double collectiveSeconds();
 namespace relt::mpi {
 // Every rank's value, in rank order, on every rank.
 std::vector<double> allgather(double value);
+// Every rank's buffer, in rank order, on every rank; lengths[r] is rank r's buffer length (known
+// to all in advance, so one MPI_Allgatherv suffices).
+std::vector<std::vector<double>> allgatherv(const std::vector<double>& mine, const std::vector<size_t>& lengths);
 }  // namespace relt::mpi

@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "image/compare.h"
 #include "render_driver.h"
+#include "replica/permutation.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_summary.h"
 
@@ -19,9 +20,52 @@ constexpr int kExitInternal = 1;
 struct Options {
   relt::RenderSettings render;
   std::string integrator = "bdpt", mis = "power";
+  std::string family = "relaxed", exchange = "deo", placement = "spread", misLevels = "balance";
+  CLI::Option* chains = nullptr;
+  std::vector<CLI::Option*> reltOnly;  // options that only relt takes
   std::string infoScene;
   std::string compareA, compareB, compareDiff, comparePng;
 };
+
+// relt: the ladder (family, levels), how many ladders, the exchanges and where chains live.
+void addReplicaOptions(CLI::App& cmd, Options& o) {
+  relt::ReplicaSettings& r = o.render.replica;
+  auto only = [&](CLI::Option* opt) { o.reltOnly.push_back(opt); };
+  only(cmd.add_option("--family", o.family, "relt: target family of the levels")
+           ->check(CLI::IsMember({"kitaoka", "relaxed"}))
+           ->capture_default_str());
+  only(cmd.add_option("--levels", r.family.levels, "relt: levels per ladder (relaxed; kitaoka has 4)")
+           ->check(CLI::Range(2, 64))
+           ->capture_default_str());
+  only(cmd.add_option("--ladders", r.ladders, "relt: number of ladders (chains = ladders x levels)")
+           ->check(CLI::Range(1, 1 << 16))
+           ->capture_default_str());
+  only(cmd.add_option("--exchange", o.exchange, "relt: exchange move between levels")
+           ->check(CLI::IsMember({"deo", "neighbour", "permutation", "swap", "eem"}))
+           ->capture_default_str());
+  only(cmd.add_option("--exchange-interval", r.exchangeInterval, "relt: steps per chain between exchanges")
+           ->check(CLI::Range(1, 1 << 20))
+           ->capture_default_str());
+  only(cmd.add_option("--placement", o.placement, "relt: chains over ranks (spread: chain c on rank c mod P; packed: whole ladders)")
+           ->check(CLI::IsMember({"spread", "packed"}))
+           ->capture_default_str());
+  only(cmd.add_option("--mis-levels", o.misLevels, "relt: MIS heuristic over levels")
+           ->check(CLI::IsMember({"balance", "power"}))
+           ->capture_default_str());
+  only(cmd.add_flag("--per-level", r.perLevel, "relt: also write each level's contribution as an EXR layer levelK"));
+  only(cmd.add_option("--relaxed-eps", r.family.relaxedEps1, "relt relaxed: eps_1 as a multiple of the mean of I")
+           ->check(CLI::PositiveNumber)
+           ->capture_default_str());
+  only(cmd.add_option("--relaxed-ratio", r.family.relaxedRatio, "relt relaxed: eps_{k+1} / eps_k")
+           ->check(CLI::Range(1.0, 1e6))
+           ->capture_default_str());
+  only(cmd.add_option("--kitaoka-delta", r.family.kitaokaDelta, "relt kitaoka: weight of L5 in the specific replica")
+           ->check(CLI::Range(0.0, 1.0))
+           ->capture_default_str());
+  only(cmd.add_option("--energy-rings", r.exchange.energyRings, "relt eem: number of energy rings (0: one per level)")
+           ->check(CLI::Range(0, 1024))
+           ->capture_default_str());
+}
 
 void addRenderOptions(CLI::App& cmd, Options& o) {
   relt::RenderSettings& r = o.render;
@@ -30,7 +74,7 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--png", r.png, "also write an sRGB PNG preview");
   cmd.add_option("--stats", r.stats, "write settings and statistics as JSON");
   cmd.add_option("--integrator", o.integrator, "light transport algorithm")
-      ->check(CLI::IsMember({"pt", "bdpt", "pssmlt", "mmlt", "erpt"}))
+      ->check(CLI::IsMember({"pt", "bdpt", "pssmlt", "mmlt", "erpt", "relt"}))
       ->capture_default_str();
   auto* spp = cmd.add_option("--spp", r.spp, "samples per pixel (default 16)")->check(CLI::Range(1, 1 << 24));
   auto* time = cmd.add_option("--time", r.seconds, "render for this many seconds (decided collectively)")
@@ -41,9 +85,10 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   spp->excludes(time);
   mpp->excludes(spp);
   mpp->excludes(time);
-  cmd.add_option("--chains", r.chains, "Markov-chain integrators: number of chains (independent of the rank count)")
-      ->check(CLI::Range(1, 1 << 20))
-      ->capture_default_str();
+  o.chains = cmd.add_option("--chains", r.chains, "pssmlt, mmlt: number of chains (independent of the rank count)")
+                 ->check(CLI::Range(1, 1 << 20))
+                 ->capture_default_str();
+  addReplicaOptions(cmd, o);
   cmd.add_option("--large-step-probability", r.largeStepProbability, "pssmlt, mmlt: probability of a large step")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
@@ -75,6 +120,30 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--camera", r.camera, "camera name (default: the first camera)");
   cmd.add_option("--exposure", r.exposure, "PNG exposure in stops")->capture_default_str();
   cmd.add_option("--mis", o.mis, "MIS heuristic")->check(CLI::IsMember({"power", "balance"}))->capture_default_str();
+}
+
+// Replica options belong to relt alone, and a few combinations cannot work.
+void checkReplicaOptions(Options& o) {
+  relt::RenderSettings& r = o.render;
+  const bool isRelt = r.integrator == relt::Integrator::Relt;
+  for (CLI::Option* opt : o.reltOnly)
+    if (!isRelt && opt->count() > 0) throw relt::InputError("", opt->get_name(), "only for --integrator relt");
+  if (!isRelt) return;
+  if (o.chains->count() > 0)
+    throw relt::InputError("", "--chains", "relt runs ladders x levels chains: use --ladders and --levels");
+  r.replica.family.kind = *relt::parseFamily(o.family);
+  r.replica.exchange.move = *relt::parseExchangeMove(o.exchange);
+  r.replica.placement = *relt::parsePlacement(o.placement);
+  r.replica.beta = o.misLevels == "power" ? 2.0 : 1.0;
+  if (r.replica.family.kind == relt::FamilyKind::Kitaoka) {
+    for (CLI::Option* opt : o.reltOnly)
+      if (opt->count() > 0 && (opt->get_name() == "--levels" || opt->get_name() == "--relaxed-eps" ||
+                               opt->get_name() == "--relaxed-ratio"))
+        throw relt::InputError("", opt->get_name(), "not for --family kitaoka (its four levels are fixed)");
+    r.replica.family.levels = 4;
+  }
+  if (r.replica.exchange.move == relt::ExchangeMove::Permutation && r.replica.family.levels > relt::kMaxPermutationLevels)
+    throw relt::InputError("", "--exchange", "permutation needs at most 12 levels (its cost is M 2^M)");
 }
 
 }  // namespace
@@ -137,11 +206,12 @@ int main(int argc, char** argv) {
                           : o.integrator == "bdpt"   ? relt::Integrator::Bdpt
                           : o.integrator == "pssmlt" ? relt::Integrator::Pssmlt
                           : o.integrator == "mmlt"   ? relt::Integrator::Mmlt
+                          : o.integrator == "relt"   ? relt::Integrator::Relt
                                                      : relt::Integrator::Erpt;
     const bool chains = relt::isMarkovChain(o.render.integrator);
     if (chains && o.render.spp) throw relt::InputError("", "--spp", o.integrator + " takes --mutations-per-pixel");
     if (!chains && o.render.mutationsPerPixel)
-      throw relt::InputError("", "--mutations-per-pixel", "only for the Markov-chain integrators (pssmlt, mmlt)");
+      throw relt::InputError("", "--mutations-per-pixel", "only for the Markov-chain integrators (pssmlt, mmlt, relt)");
     if (o.render.smallStepMin >= o.render.smallStepMax)
       throw relt::InputError("", "--small-step-min", "must be smaller than --small-step-max");
     if (o.render.kelemenWeights && o.render.integrator != relt::Integrator::Pssmlt)
@@ -149,7 +219,8 @@ int main(int argc, char** argv) {
     if (o.render.integrator != relt::Integrator::Erpt && (o.render.erptMaxConsecutive > 0 || o.render.erptProposalFilter))
       throw relt::InputError("", "--erpt-max-consecutive/--erpt-proposal-filter", "only for erpt");
     if (!chains && o.render.snapshotEvery > 0.0)
-      throw relt::InputError("", "--snapshot-every", "only for the Markov-chain integrators (pssmlt, mmlt)");
+      throw relt::InputError("", "--snapshot-every", "only for the Markov-chain integrators (pssmlt, mmlt, relt)");
+    checkReplicaOptions(o);
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
     relt::mpi::runRender(session, o.render);
     return 0;

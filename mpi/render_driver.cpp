@@ -2,7 +2,9 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +14,7 @@
 #include "erpt_driver.h"
 #include "pass_loop.h"
 #include "pssmlt_driver.h"
+#include "relt_driver.h"
 #include "scene/gltf_loader.h"
 
 namespace relt::mpi {
@@ -42,15 +45,16 @@ void checkOutputsWritable(const Session& session, const RenderSettings& s) {
   if (bad) throw InputError("", "", session.isRoot() ? problem : "output not writable");
 }
 
-// EXR and optional PNG, each written atomically. Root only.
-void writeImages(const RenderSettings& settings, const Image& image) {
-  writeExr(settings.output, image);
+// EXR (with optional extra layers) and optional PNG, each written atomically. Root only.
+void writeImages(const RenderSettings& settings, const Image& image, const std::vector<ImageLayer>& layers = {}) {
+  writeExr(settings.output, image, layers);
   if (!settings.png.empty()) writePng(settings.png, image, settings.exposure);
 }
 
 // The images and the stats (with the wall time added). Root only.
-void writeOutputs(const RenderSettings& settings, const Image& image, nlohmann::json stats, Clock::time_point wallStart) {
-  writeImages(settings, image);
+void writeOutputs(const RenderSettings& settings, const Image& image, nlohmann::json stats, Clock::time_point wallStart,
+                  const std::vector<ImageLayer>& layers = {}) {
+  writeImages(settings, image, layers);
   if (!settings.stats.empty()) {
     stats["wall_seconds"] = since(wallStart);
     writeFileAtomically(settings.stats, stats.dump(2) + "\n");
@@ -96,6 +100,84 @@ void addMutationRates(nlohmann::json& j, uint64_t mutations, const Gathered& g, 
   j["mutations_per_second_per_rank"] = mutations / std::max(g.renderSeconds, 1e-9) / ranks;
 }
 
+double ratio(uint64_t a, uint64_t b) { return b ? double(a) / double(b) : 0.0; }
+
+// Replica exchange: the ladder's diagnostics go to stats.json (DESIGN §3.5).
+nlohmann::json reltStats(const mpi::ReltOutcome& o) {
+  nlohmann::json j;
+  j["rounds"] = o.rounds;
+  j["steps_per_chain"] = o.stepsPerChain;
+  j["round_trips"] = o.roundTrips;
+  j["round_trips_per_chain"] = double(o.roundTrips) / std::max(1, o.ladders * o.levels);
+  j["bootstrap_samples"] = o.bootstrapSamples;
+  j["loop_seconds"] = o.loopSeconds;
+  j["round_collective_seconds_per_rank"] = o.roundCollectiveSeconds;
+  nlohmann::json levels = nlohmann::json::array();
+  for (int k = 0; k < o.levels; ++k) {
+    const LevelCounters& c = o.perLevel[size_t(k)];
+    nlohmann::json l;
+    l["level"] = k;
+    l["name"] = o.levelNames[size_t(k)];
+    l["normaliser"] = o.normalisers[size_t(k)];
+    l["mutations"] = c.smallProposed + c.largeProposed;
+    l["acceptance_small"] = ratio(c.smallAccepted, c.smallProposed);
+    l["acceptance_large"] = ratio(c.largeAccepted, c.largeProposed);
+    l["invalid_proposals"] = c.invalidProposals;
+    l["seconds"] = c.seconds;
+    l["state_change_rate"] = o.tally.changeRate(k);
+    if (k + 1 < o.levels) {
+      const double a = o.tally.adjacentAcceptance(k);
+      l["swap_acceptance_with_next"] = std::isnan(a) ? nlohmann::json(nullptr) : nlohmann::json(a);
+    }
+    levels.push_back(l);
+  }
+  j["levels"] = levels;
+  return j;
+}
+
+void renderRelt(const Session& session, Renderer& renderer, const RenderSettings& settings, Clock::time_point wallStart) {
+  const bool layers = settings.replica.perLevel;
+  std::vector<Film> films;
+  const auto renderStart = Clock::now();
+  int snapshots = 0;
+  const mpi::ReltOutcome o = mpi::runRelt(session, renderer, settings, films, [&](const std::vector<double>& sums, double d) {
+    writeImages(settings, Renderer::resolve(films[0], sums, d));
+    ++snapshots;
+  });
+  // The first film takes the sum of all levels; the others are reduced as layers.
+  std::vector<std::vector<double>> layerSums;
+  if (layers)
+    for (Film& f : films) {
+      layerSums.push_back(f.data());
+      reduceSumToRoot(layerSums.back());
+    }
+  for (size_t k = 1; k < films.size(); ++k)
+    for (size_t i = 0; i < films[0].data().size(); ++i) films[0].data()[i] += films[k].data()[i];
+  const Gathered g = gatherAfterRender(renderStart, renderer, films[0]);
+  if (!session.isRoot()) return;
+  const Image image = Renderer::resolve(films[0], films[0].data(), o.resolveDivisor);
+  std::vector<ImageLayer> out;
+  for (size_t k = 0; k < layerSums.size(); ++k)
+    out.push_back({"level" + std::to_string(k), Renderer::resolve(films[k], layerSums[k], o.resolveDivisor)});
+  uint64_t mutations = 0, invalid = 0, nonFinite = 0;
+  for (const LevelCounters& c : o.perLevel) {
+    mutations += c.smallProposed + c.largeProposed;
+    invalid += c.invalidProposals;
+    nonFinite += c.nonFinite;
+  }
+  nlohmann::json j = commonStats(settings, session, g, image);
+  j["nan_inf_samples_dropped"] = nonFinite;
+  addMutationRates(j, mutations, g, session.size());
+  j["snapshots"] = snapshots;
+  j["invalid_proposals"] = invalid;
+  j["relt"] = reltStats(o);
+  writeOutputs(settings, image, j, wallStart, out);
+  std::fprintf(stderr, "relt: %llu mutations in %llu rounds, %.2f s, %.3f M mutations/s, %llu round trips; wrote %s\n",
+               static_cast<unsigned long long>(mutations), static_cast<unsigned long long>(o.rounds), g.renderSeconds,
+               mutations / std::max(g.renderSeconds, 1e-9) * 1e-6, static_cast<unsigned long long>(o.roundTrips),
+               settings.output.c_str());
+}
+
 }  // namespace
 
 void runRender(const Session& session, RenderSettings settings) {
@@ -106,6 +188,10 @@ void runRender(const Session& session, RenderSettings settings) {
     for (const std::string& w : renderer.scene().warnings) std::fprintf(stderr, "relt: warning: %s\n", w.c_str());
   checkOutputsWritable(session, settings);
 
+  if (settings.integrator == Integrator::Relt) {
+    renderRelt(session, renderer, settings, wallStart);
+    return;
+  }
   Film film(settings.width, settings.height);
   if (isMarkovChain(settings.integrator)) {
     const auto renderStart = Clock::now();

@@ -59,19 +59,29 @@ void writeFileAtomically(const std::string& path, const std::string& content) {
   commitTemporary(tmp, path);
 }
 
-void writeExr(const std::string& path, const Image& image) {
+namespace {
+// R, G, B slices of an image under the channel names prefix + "R" etc.
+void insertRgb(Imf::FrameBuffer& fb, const Image& image, const std::string& prefix, int minX = 0, int minY = 0) {
+  const size_t xs = 3 * sizeof(float), ys = xs * image.width;
+  char* base = reinterpret_cast<char*>(const_cast<float*>(image.rgb.data())) - (minX * xs + minY * ys);
+  fb.insert(prefix + "R", Imf::Slice(Imf::FLOAT, base, xs, ys));
+  fb.insert(prefix + "G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xs, ys));
+  fb.insert(prefix + "B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
+}
+}  // namespace
+
+void writeExr(const std::string& path, const Image& image, const std::vector<ImageLayer>& layers) {
   const std::string tmp = temporaryPathFor(path);
   try {
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
     for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
+    for (const ImageLayer& layer : layers)
+      for (const char* c : {"R", "G", "B"}) header.channels().insert(layer.name + "." + c, Imf::Channel(Imf::FLOAT));
     Imf::OutputFile file(tmp.c_str(), header);
     Imf::FrameBuffer fb;
-    char* base = reinterpret_cast<char*>(const_cast<float*>(image.rgb.data()));
-    const size_t xs = 3 * sizeof(float), ys = xs * image.width;
-    fb.insert("R", Imf::Slice(Imf::FLOAT, base, xs, ys));
-    fb.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xs, ys));
-    fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
+    insertRgb(fb, image, "");
+    for (const ImageLayer& layer : layers) insertRgb(fb, layer.image, layer.name + ".");
     file.setFrameBuffer(fb);
     file.writePixels(image.height);
   } catch (const std::exception& e) {
@@ -81,17 +91,16 @@ void writeExr(const std::string& path, const Image& image) {
   commitTemporary(tmp, path);
 }
 
-Image readExr(const std::string& path) {
+Image readExr(const std::string& path, const std::string& layer) {
   try {
     Imf::InputFile file(path.c_str());
+    const std::string prefix = layer.empty() ? "" : layer + ".";
+    if (!file.header().channels().findChannel(prefix + "R"))
+      throw std::runtime_error("no channel " + prefix + "R");
     const Imath::Box2i dw = file.header().dataWindow();
     Image image(dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1);
     Imf::FrameBuffer fb;
-    const size_t xs = 3 * sizeof(float), ys = xs * image.width;
-    char* base = reinterpret_cast<char*>(image.rgb.data()) - (dw.min.x * xs + dw.min.y * ys);
-    fb.insert("R", Imf::Slice(Imf::FLOAT, base, xs, ys));
-    fb.insert("G", Imf::Slice(Imf::FLOAT, base + sizeof(float), xs, ys));
-    fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
+    insertRgb(fb, image, prefix, dw.min.x, dw.min.y);
     file.setFrameBuffer(fb);
     file.readPixels(dw.min.y, dw.max.y);
     return image;

@@ -16,9 +16,16 @@ struct Image {
   double mean() const;  // mean over pixels and channels
 };
 
+// A named extra layer of an EXR (channels NAME.R, NAME.G, NAME.B), e.g. one per replica level.
+struct ImageLayer {
+  std::string name;
+  Image image;
+};
+
 // Throws InputError (file, "", reason) if the file cannot be written or read.
-void writeExr(const std::string& path, const Image& image);
-Image readExr(const std::string& path);
+void writeExr(const std::string& path, const Image& image, const std::vector<ImageLayer>& layers = {});
+// The main RGB channels, or those of `layer`.
+Image readExr(const std::string& path, const std::string& layer = "");
 void writePng(const std::string& path, const Image& image, float exposure);
 
 // Writes `content` to `path` atomically (temporary file, fsync, rename).

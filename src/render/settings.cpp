@@ -9,8 +9,16 @@ const char* integratorName(Integrator i) {
     case Integrator::Pssmlt: return "pssmlt";
     case Integrator::Mmlt: return "mmlt";
     case Integrator::Erpt: return "erpt";
+    case Integrator::Relt: return "relt";
   }
   return "?";
+}
+
+ReplicaSettings effectiveReplicaSettings(const RenderSettings& s) {
+  ReplicaSettings r = s.replica;
+  r.family.sizes = KelemenSizes{s.smallStepMin, s.smallStepMax};
+  r.family.largeStepProbability = s.largeStepProbability;
+  return r;
 }
 
 nlohmann::json RenderSettings::toJson() const {
@@ -36,7 +44,25 @@ nlohmann::json RenderSettings::toJson() const {
   }
   if (isMarkovChain(integrator)) {
     j["mutations_per_pixel"] = mutationsPerPixel.value_or(16.0);
-    j["chains"] = chains;
+    if (integrator == Integrator::Relt) {
+      const ReplicaSettings& r = replica;
+      j["family"] = familyName(r.family.kind);
+      if (r.family.kind == FamilyKind::Relaxed) {
+        j["levels"] = r.family.levels;
+        j["relaxed_eps1"] = r.family.relaxedEps1;
+        j["relaxed_ratio"] = r.family.relaxedRatio;
+      } else {
+        j["kitaoka_delta"] = r.family.kitaokaDelta;
+      }
+      j["ladders"] = r.ladders;
+      j["exchange"] = exchangeMoveName(r.exchange.move);
+      j["exchange_interval"] = r.exchangeInterval;
+      j["placement"] = placementName(r.placement);
+      j["mis_levels"] = r.beta == 1.0 ? "balance" : "power";
+      if (r.perLevel) j["per_level"] = true;
+    } else {
+      j["chains"] = chains;
+    }
     j["large_step_probability"] = largeStepProbability;
     j["small_step"] = {smallStepMin, smallStepMax};
     if (kelemenWeights) j["kelemen_weights"] = true;

@@ -8,12 +8,16 @@
 #include <nlohmann/json.hpp>
 
 #include "path/path_context.h"
+#include "replica/replica_settings.h"
 
 namespace relt {
 
-enum class Integrator : uint8_t { PathTracing, Bdpt, Pssmlt, Mmlt, Erpt };
+enum class Integrator : uint8_t { PathTracing, Bdpt, Pssmlt, Mmlt, Erpt, Relt };
 
-inline bool isMarkovChain(Integrator i) { return i == Integrator::Pssmlt || i == Integrator::Mmlt; }
+// The integrators whose budget is mutations per pixel and that render in rounds.
+inline bool isMarkovChain(Integrator i) {
+  return i == Integrator::Pssmlt || i == Integrator::Mmlt || i == Integrator::Relt;
+}
 
 struct RenderSettings {
   std::string scenePath;
@@ -38,11 +42,15 @@ struct RenderSettings {
   float largeStepProbability = 0.3f;                  // pssmlt, mmlt
   float smallStepMin = 1.0f / 1024, smallStepMax = 1.0f / 64;  // Kelemen small-step sizes s1, s2
   bool kelemenWeights = false;                         // pssmlt: Kelemen's large-step weighting
+  ReplicaSettings replica;      // relt: family, ladder, exchanges, placement
   double snapshotEvery = 0.0;  // Markov chains: write the image so far every this many seconds (0: never)
 
   nlohmann::json toJson() const;
 };
 
 const char* integratorName(Integrator i);
+// relt's settings with the chain options that apply to every Markov-chain integrator filled in
+// (Kelemen sizes, large-step probability).
+ReplicaSettings effectiveReplicaSettings(const RenderSettings& s);
 
 }  // namespace relt

@@ -72,3 +72,30 @@ TEST(RankIndependence, TimedRenderStopsEveryRankAtTheSamePass) {
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_TRUE(fileExists(dir + "/t.exr"));
 }
+
+TEST(RankIndependence, ReltImageIsTheSameOnOneTwoAndFourRanksWithBothPlacements) {
+  // 3 ladders of 5 levels: 15 chains split unevenly; exchanges are permutations, so every level's
+  // label moves between ranks under spread placement.
+  const std::string amount =
+      "--mutations-per-pixel 4 --ladders 3 --levels 5 --exchange permutation --exchange-interval 4";
+  const std::string spread = makeTempDir("mpi-relt-spread"), packed = makeTempDir("mpi-relt-packed");
+  const Image reference = renderWithRanks(1, "relt", spread, amount);
+  expectSameImage(reference, renderWithRanks(2, "relt", spread, amount));
+  expectSameImage(reference, renderWithRanks(4, "relt", spread, amount));
+  expectSameImage(reference, renderWithRanks(2, "relt", packed, amount + " --placement packed"));
+  expectSameImage(reference, renderWithRanks(4, "relt", packed, amount + " --placement packed"));
+}
+
+TEST(RankIndependence, ReltPerLevelLayersSumToTheImage) {
+  const std::string dir = makeTempDir("mpi-relt-layers");
+  const Image image =
+      renderWithRanks(2, "relt", dir, "--mutations-per-pixel 4 --ladders 2 --family kitaoka --per-level");
+  const std::string path = dir + "/np2-relt.exr";
+  Image sum(image.width, image.height);
+  for (int k = 0; k < 4; ++k) {
+    const Image layer = readExr(path, "level" + std::to_string(k));
+    for (size_t i = 0; i < sum.rgb.size(); ++i) sum.rgb[i] += layer.rgb[i];
+  }
+  expectSameImage(image, sum);
+  EXPECT_THROW(readExr(path, "level4"), std::exception) << "kitaoka has exactly four levels";
+}

@@ -13,13 +13,15 @@
 using namespace relt;
 using namespace relt::test;
 
-TEST(Snapshot, MidRenderImageIsAValidExrCloseToTheFinalOne) {
-  const std::string dir = makeTempDir("snapshot");
+class Snapshot : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Snapshot, MidRenderImageIsAValidExrCloseToTheFinalOne) {
+  const std::string dir = makeTempDir("snapshot-" + GetParam());
   const std::string out = dir + "/out.exr", early = dir + "/early.exr";
   // Start a 4 s render on 2 ranks, copy the first snapshot as soon as the output appears, then
   // wait for the end.
   const std::string render = mpirun(2) + reltBinary() + " render " + sourcePath("scenes/cornell-box.gltf") + " -o " +
-                             out + " --integrator pssmlt --time 4 --snapshot-every 0.5 --width 64 --height 64" +
+                             out + " --integrator " + GetParam() + " --time 4 --snapshot-every 0.5 --width 64 --height 64" +
                              " --stats " + dir + "/stats.json";
   const CommandResult r = runCommand("(" + render + ") & pid=$!; while [ ! -f " + out +
                                      " ] && kill -0 $pid 2>/dev/null; do sleep 0.05; done; cp " + out + " " + early +
@@ -34,3 +36,6 @@ TEST(Snapshot, MidRenderImageIsAValidExrCloseToTheFinalOne) {
   EXPECT_GT(snapshot.mean(), 0.0);
   EXPECT_NEAR(snapshot.mean(), final.mean(), 0.1 * final.mean());
 }
+
+INSTANTIATE_TEST_SUITE_P(MarkovChains, Snapshot, ::testing::Values("pssmlt", "relt"),
+                         [](const auto& info) { return info.param; });

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "render_fixture.h"
 #include "scene/gltf_loader.h"
@@ -23,6 +24,7 @@ RenderSettings settingsFor(Integrator integrator, uint64_t seed, int spp, int si
     // mmlt spreads its chains over path lengths in proportion to their brightness: with few chains
     // that random allocation dominates the error, so it gets more (shorter) chains.
     s.chains = integrator == Integrator::Mmlt ? 2048 : 64;
+    s.replica.ladders = 8;
   } else {
     s.spp = spp;
   }
@@ -48,7 +50,7 @@ TEST_P(IntegratorTest, FurnaceMatchesAnalyticValueWithinOnePercent) {
 
 INSTANTIATE_TEST_SUITE_P(AllIntegrators, IntegratorTest,
                          ::testing::Values(Integrator::PathTracing, Integrator::Bdpt, Integrator::Pssmlt,
-                                           Integrator::Mmlt, Integrator::Erpt),
+                                           Integrator::Mmlt, Integrator::Erpt, Integrator::Relt),
                          [](const auto& info) { return std::string(integratorName(info.param)); });
 
 // Two integrators estimate the same image: the mean and four regions agree within 4 standard
@@ -56,7 +58,7 @@ INSTANTIATE_TEST_SUITE_P(AllIntegrators, IntegratorTest,
 // chain images have heavy-tailed errors (a chain that finds a bright path late), so their standard
 // errors are estimated from 20 seeds rather than 10.
 static void expectAgreementOnCornellBox(Integrator first, Integrator second, int spp, int seeds,
-                                        bool kelemenWeights = false) {
+                                        const std::function<void(RenderSettings&)>& tweak = {}) {
   const std::string path = sourcePath("scenes/cornell-box.gltf");
   const int size = 48;
   struct Region {
@@ -73,7 +75,7 @@ static void expectAgreementOnCornellBox(Integrator first, Integrator second, int
   for (int i = 0; i < 2; ++i)
     for (int k = 0; k < seeds; ++k) {
       RenderSettings settings = settingsFor(integrators[i], 1000 * (i + 1) + k, spp, size);
-      settings.kelemenWeights = kelemenWeights && isMarkovChain(integrators[i]);
+      if (tweak && i == 0) tweak(settings);
       const Image image = renderInProcess(path, settings);
       for (int r = 0; r < 5; ++r)
         values[i][r].push_back(regionMean(image, regions[r].x0, regions[r].y0, regions[r].x1, regions[r].y1));
@@ -98,7 +100,8 @@ TEST(IntegratorAgreement, PssmltAndBdptAgreeOnCornellBox) {
 }
 
 TEST(IntegratorAgreement, PssmltWithKelemenWeightsAndBdptAgreeOnCornellBox) {
-  expectAgreementOnCornellBox(Integrator::Pssmlt, Integrator::Bdpt, 16, 20, true);
+  expectAgreementOnCornellBox(Integrator::Pssmlt, Integrator::Bdpt, 16, 20,
+                              [](RenderSettings& s) { s.kelemenWeights = true; });
 }
 
 TEST(IntegratorAgreement, ErptAndBdptAgreeOnCornellBox) {
@@ -108,4 +111,27 @@ TEST(IntegratorAgreement, ErptAndBdptAgreeOnCornellBox) {
 
 TEST(IntegratorAgreement, MmltAndBdptAgreeOnCornellBox) {
   expectAgreementOnCornellBox(Integrator::Mmlt, Integrator::Bdpt, 64, 20);
+}
+
+// Replica exchange, both families, default exchange (deo) and the permutation move.
+TEST(IntegratorAgreement, ReltRelaxedAndBdptAgreeOnCornellBox) {
+  expectAgreementOnCornellBox(Integrator::Relt, Integrator::Bdpt, 16, 20);
+}
+
+TEST(IntegratorAgreement, ReltKitaokaWithPermutationsAndBdptAgreeOnCornellBox) {
+  expectAgreementOnCornellBox(Integrator::Relt, Integrator::Bdpt, 16, 20, [](RenderSettings& s) {
+    s.replica.family.kind = FamilyKind::Kitaoka;
+    s.replica.family.levels = 4;
+    s.replica.exchange.move = ExchangeMove::Permutation;
+  });
+}
+
+TEST(ReltFurnace, KitaokaFamilyMatchesAnalyticValueWithinOnePercent) {
+  const std::string path = sourcePath("scenes/furnace.gltf");
+  const Scene scene = loadGltf(path);
+  const double expected = (1.0 - std::pow(0.5, scene.defaults.maxDepth)) / 0.5;
+  RenderSettings s = settingsFor(Integrator::Relt, 7, 16, 32);
+  s.replica.family.kind = FamilyKind::Kitaoka;
+  s.replica.family.levels = 4;
+  EXPECT_NEAR(renderInProcess(path, s).mean(), expected, 0.01 * expected);
 }

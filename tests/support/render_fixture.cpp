@@ -6,6 +6,8 @@
 #include "mcmc/mmlt.h"
 #include "mcmc/pssmlt.h"
 #include "render/renderer.h"
+#include "replica/replica_pool.h"
+#include "replica/replica_schedule.h"
 #include "scene/gltf_loader.h"
 
 namespace relt::test {
@@ -15,6 +17,22 @@ Image renderInProcess(const std::string& scene, RenderSettings settings) {
   Renderer renderer(loadGltf(scene), settings);
   const RenderSettings& s = renderer.settings();
   Film film(s.width, s.height);
+  if (s.integrator == Integrator::Relt) {
+    // One process hosts every chain; each round's message is the only one (as mpi/relt_driver).
+    PssEvaluator eval(renderer.context(), s.width, s.height);
+    const ReplicaSettings rs = effectiveReplicaSettings(s);
+    ReplicaPool pool(eval, rs, s.seed, bootstrapClassLuminance(eval, s.seed, rs.bootstrap, 0, 1), 0, 1);
+    std::vector<Film> films(1, film);
+    const double area = double(s.width) * s.height;
+    const ReplicaSchedule schedule(area, pool.chainCount(), rs.exchangeInterval, std::nullopt,
+                                   s.mutationsPerPixel.value_or(16.0));
+    uint64_t rounds = 0;
+    for (; pool.active() && schedule.anotherRound(rounds, 0.0, 0.0); ++rounds) {
+      pool.runRound(schedule.stepsInRound(rounds), films);
+      pool.finishRound({pool.roundMessage(0.0)}, rounds);
+    }
+    return Renderer::resolve(films[0], films[0].data(), replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
+  }
   if (isMarkovChain(s.integrator)) {
     // One process plays every rank: all bootstrap samples, all chains (as mpi/pssmlt_driver does).
     PssmltSettings ps;

@@ -3,6 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include "test_support.h"
 
@@ -50,6 +53,13 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"SmallStepsOutOfOrder", "render " + kScene + " -o OUT --integrator pssmlt --small-step-min 0.1 --small-step-max 0.01", "small-step"},
                       BadInvocation{"LargeStepProbabilityAboveOne", "render " + kScene + " -o OUT --integrator pssmlt --large-step-probability 1.5", "large-step-probability"},
                       BadInvocation{"ErptFilterWithBdpt", "render " + kScene + " -o OUT --erpt-proposal-filter", "only for erpt"},
+                      BadInvocation{"LaddersWithBdpt", "render " + kScene + " -o OUT --ladders 4", "only for --integrator relt"},
+                      BadInvocation{"ChainsWithRelt", "render " + kScene + " -o OUT --integrator relt --chains 8", "--ladders"},
+                      BadInvocation{"LevelsWithKitaoka", "render " + kScene + " -o OUT --integrator relt --family kitaoka --levels 6", "kitaoka"},
+                      BadInvocation{"UnknownFamily", "render " + kScene + " -o OUT --integrator relt --family warm", "warm"},
+                      BadInvocation{"UnknownExchange", "render " + kScene + " -o OUT --integrator relt --exchange shuffle", "shuffle"},
+                      BadInvocation{"PermutationBeyondTwelveLevels", "render " + kScene + " -o OUT --integrator relt --levels 13 --exchange permutation", "at most 12"},
+                      BadInvocation{"OneLevel", "render " + kScene + " -o OUT --integrator relt --levels 1", "levels"},
                       BadInvocation{"MissingScene", "render /nonexistent.gltf -o OUT", "nonexistent"},
                       BadInvocation{"UnknownIntegrator", "render " + kScene + " -o OUT --integrator magic", "magic"},
                       BadInvocation{"NegativeSpp", "render " + kScene + " -o OUT --spp -3", "spp"},
@@ -105,6 +115,22 @@ TEST(Cli, CompareReportsZeroErrorForAnImageAgainstItselfAndWritesTheDifference) 
   EXPECT_NE(r.output.find("\"rmse\": 0,"), std::string::npos) << r.output;
   EXPECT_TRUE(fileExists(dir + "/d.exr"));
   EXPECT_TRUE(fileExists(dir + "/d.png"));
+}
+
+TEST(Cli, ReltWritesLadderDiagnosticsToStats) {
+  const std::string dir = makeTempDir("cli-relt");
+  const CommandResult r = runCommand(reltBinary() + " render " + kScene + " -o " + dir + "/r.exr --stats " + dir +
+                                     "/r.json --integrator relt --levels 4 --ladders 2 --mutations-per-pixel 2 "
+                                     "--width 24 --height 16");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream stats(dir + "/r.json");
+  const nlohmann::json j = nlohmann::json::parse(stats);
+  ASSERT_EQ(j["relt"]["levels"].size(), 4u);
+  EXPECT_GT(j["relt"]["rounds"].get<int>(), 0);
+  EXPECT_TRUE(j["relt"]["levels"][0].contains("swap_acceptance_with_next"));
+  EXPECT_FALSE(j["relt"]["levels"][3].contains("swap_acceptance_with_next"));
+  EXPECT_EQ(j["settings"]["exchange"], "deo");
+  EXPECT_EQ(j["mutations"].get<uint64_t>(), 8u * uint64_t(j["relt"]["steps_per_chain"].get<int>()));
 }
 
 TEST(Cli, RenderWritesExrPngAndStats) {

@@ -1,0 +1,103 @@
+#include "relt_driver.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include "mcmc/round_schedule.h"
+#include "replica/replica_schedule.h"
+#include "render/schedule.h"
+
+namespace relt::mpi {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// The sum of every level's film, reduced onto the root.
+std::vector<double> reducedSum(const std::vector<Film>& films) {
+  std::vector<double> sums = films[0].data();
+  for (size_t k = 1; k < films.size(); ++k)
+    for (size_t i = 0; i < sums.size(); ++i) sums[i] += films[k].data()[i];
+  reduceSumToRoot(sums);
+  return sums;
+}
+
+}  // namespace
+
+ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSettings& settings,
+                    std::vector<Film>& films, const SnapshotWriter& snapshot) {
+  const ReplicaSettings rs = effectiveReplicaSettings(settings);
+  PssEvaluator eval(renderer.context(), settings.width, settings.height);
+
+  // Bootstrap: sample i on rank i mod P; every rank then holds every sample's class luminances.
+  std::vector<double> luminance = bootstrapClassLuminance(eval, settings.seed, rs.bootstrap, session.rank(), session.size());
+  allreduceSum(luminance);
+  ReplicaPool pool(eval, rs, settings.seed, luminance, session.rank(), session.size());
+  films.assign(rs.perLevel ? size_t(pool.levels()) : 1, Film(settings.width, settings.height));
+
+  const double area = double(settings.width) * settings.height;
+  const ReplicaSchedule schedule(area, pool.chainCount(), rs.exchangeInterval, settings.seconds,
+                                 settings.mutationsPerPixel.value_or(16.0));
+  std::vector<size_t> lengths(size_t(session.size()));
+  for (int r = 0; r < session.size(); ++r) lengths[size_t(r)] = pool.messageLength(r);
+
+  const double collectiveBefore = collectiveSeconds();
+  const auto start = Clock::now();
+  double elapsed = 0.0, lastRound = 0.0, lastSnapshot = 0.0, lastPrint = 0.0;
+  const bool tty = ::isatty(STDERR_FILENO);
+  uint64_t rounds = 0;
+  while (pool.active() && schedule.anotherRound(rounds, elapsed, lastRound)) {
+    pool.runRound(schedule.stepsInRound(rounds), films);
+    // The round's one collective: targets for the exchanges, large-step sums, elapsed times.
+    const double now = pool.finishRound(allgatherv(pool.roundMessage(since(start)), lengths), rounds);
+    ++rounds;
+    lastRound = now - elapsed;
+    elapsed = now;
+    const bool more = schedule.anotherRound(rounds, elapsed, lastRound);
+    if (session.isRoot() && elapsed - lastPrint >= 1.0) {
+      lastPrint = elapsed;
+      const double rate = double(schedule.stepsAfter(rounds)) * pool.chainCount() / std::max(elapsed, 1e-9);
+      std::fprintf(stderr, tty ? "\r%s" : "%s\n",
+                   progressLine(schedule.fraction(rounds, elapsed), elapsed, rate, "mutations").c_str());
+    }
+    if (snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more)) {
+      lastSnapshot = elapsed;
+      const std::vector<double> sums = reducedSum(films);
+      if (session.isRoot())
+        snapshot(sums, replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
+    }
+  }
+  if (session.isRoot() && tty && lastPrint > 0.0) std::fprintf(stderr, "\n");
+  const double roundCollective = collectiveSeconds() - collectiveBefore;
+
+  ReltOutcome out;
+  out.rounds = rounds;
+  out.stepsPerChain = schedule.stepsAfter(rounds);
+  out.ladders = rs.ladders;
+  out.levels = pool.levels();
+  for (int k = 0; k < pool.levels(); ++k) out.levelNames.push_back(pool.family().name(k));
+  out.normalisers = pool.normalisers();
+  out.tally = pool.tally();
+  out.roundTrips = pool.roundTrips().total();
+  out.bootstrapSamples = uint64_t(rs.bootstrap);
+  out.resolveDivisor = replicaResolveDivisor(out.stepsPerChain, rs.ladders, area);
+  out.loopSeconds = elapsed;
+  out.roundCollectiveSeconds = allgather(roundCollective);
+  for (const LevelCounters& c : pool.hostedCounters()) {
+    LevelCounters s;
+    s.smallProposed = allreduceSum(c.smallProposed);
+    s.smallAccepted = allreduceSum(c.smallAccepted);
+    s.largeProposed = allreduceSum(c.largeProposed);
+    s.largeAccepted = allreduceSum(c.largeAccepted);
+    s.invalidProposals = allreduceSum(c.invalidProposals);
+    s.nonFinite = allreduceSum(c.nonFinite);
+    s.seconds = allreduceSum(c.seconds);
+    out.perLevel.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace relt::mpi

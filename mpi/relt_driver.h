@@ -1,0 +1,35 @@
+#pragma once
+// The distributed part of replica exchange light transport: bootstrap shares, the round loop with
+// its one collective (MPI_Allgatherv of every rank's round message), snapshots. All decisions are
+// taken by src/replica from the gathered data; this layer only moves it.
+#include <vector>
+
+#include "comm.h"
+#include "film/film.h"
+#include "pssmlt_driver.h"
+#include "render/renderer.h"
+#include "replica/replica_pool.h"
+
+namespace relt::mpi {
+
+struct ReltOutcome {
+  uint64_t rounds = 0;
+  uint64_t stepsPerChain = 0;
+  int ladders = 0, levels = 0;
+  std::vector<std::string> levelNames;
+  std::vector<double> normalisers;          // b_k at the end
+  std::vector<LevelCounters> perLevel;      // summed over ranks
+  ExchangeTally tally;
+  uint64_t roundTrips = 0;
+  uint64_t bootstrapSamples = 0;
+  double resolveDivisor = 0.0;              // film sums -> pixels
+  double loopSeconds = 0.0;                 // the round loop (agreed elapsed time)
+  std::vector<double> roundCollectiveSeconds;  // per rank: inside the round loop's collectives
+};
+
+// Renders every chain this rank hosts into `films`, which it sizes: one film, or one per level
+// with --per-level (their sum is the image); not yet reduced. Collective.
+ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSettings& settings,
+                    std::vector<Film>& films, const SnapshotWriter& snapshot);
+
+}  // namespace relt::mpi
