@@ -27,7 +27,8 @@ LevelFamily::LevelFamily(const FamilySettings& settings, double meanTarget) : ki
     // neighbours in the ladder are neighbours in their exchange order. Class L0 (implicit paths
     // with a specular bounce) is estimated by the specific replica alone (Sec. 5.1.4), every
     // other class by the other three. Their mutation sizes keep s2 = 16 s1 (Eq. 24); the specific
-    // replica takes finer steps (s1 two thirds of the others').
+    // replica takes finer steps (s1 two thirds of the others'). Unlike the paper, the full level
+    // keeps L1 (directly seen emitters), which otherwise only the uniform level would sample.
     const double d = settings.kitaokaDelta;
     const KelemenSizes normal{settings.sizes.s1, 16.0f * settings.sizes.s1};
     const KelemenSizes fine{settings.sizes.s1 * (2.0f / 3.0f), 16.0f * settings.sizes.s1 * (2.0f / 3.0f)};
@@ -36,7 +37,7 @@ LevelFamily::LevelFamily(const FamilySettings& settings, double meanTarget) : ki
     const std::array<bool, kPathClassCount> allButL0{false, true, true, true, true, true};
     levels_.push_back({"specific", 0.0, {1, 0, 0, 0, 0, d}, onlyL0, fine, pl});
     levels_.push_back({"indirect", 0.0, {1, 0, 0, 1, 1, 1}, allButL0, normal, pl});
-    levels_.push_back({"full", 0.0, {1, 0, 1, 1, 1, 1}, allButL0, normal, pl});
+    levels_.push_back({"full", 0.0, {1, 1, 1, 1, 1, 1}, allButL0, normal, pl});
     // q = 1, b = 1: independent uniform samples, so the ladder reaches every path.
     levels_.push_back({"uniform", 1.0, {0, 0, 0, 0, 0, 0}, allButL0, normal, 1.0f});
     return;

@@ -39,7 +39,7 @@ TEST(LevelFamily, KitaokaLevelsAreSpecificIndirectFullUniform) {
   f.targets(kL, q);
   EXPECT_DOUBLE_EQ(q[0], 1.0 + 0.5 * 32.0);            // L0 + delta L5
   EXPECT_DOUBLE_EQ(q[1], 1.0 + 8.0 + 16.0 + 32.0);     // L0 + L3 + L4 + L5
-  EXPECT_DOUBLE_EQ(q[2], 1.0 + 4.0 + 8.0 + 16.0 + 32.0);  // all but L1
+  EXPECT_DOUBLE_EQ(q[2], 63.0);                         // everything: I (see ARCHITECTURE j)
   EXPECT_DOUBLE_EQ(q[3], 1.0);                          // uniform
   EXPECT_EQ(f.largeStepProbability(3), 1.0f);
   for (int n = 0; n < kPathClassCount; ++n) {
