@@ -20,7 +20,7 @@ constexpr int kExitInternal = 1;
 struct Options {
   relt::RenderSettings render;
   std::string integrator = "bdpt", mis = "power";
-  std::string family = "relaxed", exchange = "deo", placement = "spread", misLevels = "balance";
+  std::string family = "relaxed", exchange = "deo", placement = "spread", misLevels = "balance", init = "resample";
   CLI::Option* chains = nullptr;
   std::vector<CLI::Option*> reltOnly;  // options that only relt takes
   std::string infoScene;
@@ -51,6 +51,9 @@ void addReplicaOptions(CLI::App& cmd, Options& o) {
            ->capture_default_str());
   only(cmd.add_option("--mis-levels", o.misLevels, "relt: MIS heuristic over levels")
            ->check(CLI::IsMember({"balance", "power"}))
+           ->capture_default_str());
+  only(cmd.add_option("--init", o.init, "relt: first states (resample the bootstrap per level, or population annealing)")
+           ->check(CLI::IsMember({"resample", "annealing"}))
            ->capture_default_str());
   only(cmd.add_flag("--per-level", r.perLevel, "relt: also write each level's contribution as an EXR layer levelK"));
   only(cmd.add_option("--relaxed-eps", r.family.relaxedEps1, "relt relaxed: eps_1 as a multiple of the mean of I")
@@ -135,6 +138,7 @@ void checkReplicaOptions(Options& o) {
   r.replica.exchange.move = *relt::parseExchangeMove(o.exchange);
   r.replica.placement = *relt::parsePlacement(o.placement);
   r.replica.beta = o.misLevels == "power" ? 2.0 : 1.0;
+  r.replica.init = o.init == "annealing" ? relt::InitKind::Annealing : relt::InitKind::Resample;
   if (r.replica.family.kind == relt::FamilyKind::Kitaoka) {
     for (CLI::Option* opt : o.reltOnly)
       if (opt->count() > 0 && (opt->get_name() == "--levels" || opt->get_name() == "--relaxed-eps" ||

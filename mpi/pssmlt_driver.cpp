@@ -16,6 +16,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+}  // namespace
+
 ChainCounters sumOverRanks(const ChainCounters& c) {
   ChainCounters s;
   s.largeTargetSum = allreduceSum(c.largeTargetSum);
@@ -26,8 +28,6 @@ ChainCounters sumOverRanks(const ChainCounters& c) {
   s.invalidProposals = allreduceSum(c.invalidProposals);
   return s;
 }
-
-}  // namespace
 
 PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
                         const SnapshotWriter& snapshot) {

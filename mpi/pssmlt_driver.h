@@ -19,6 +19,9 @@ struct PssmltOutcome {
   uint64_t rounds = 0;
 };
 
+// Chain counters summed over all ranks (collective).
+ChainCounters sumOverRanks(const ChainCounters& c);
+
 // Root only: writes the image so far, given reduced film sums and the divisor for resolve().
 using SnapshotWriter = std::function<void(const std::vector<double>& sums, double divisor)>;
 

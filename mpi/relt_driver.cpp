@@ -88,11 +88,7 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   out.roundCollectiveSeconds = allgather(roundCollective);
   for (const LevelCounters& c : pool.hostedCounters()) {
     LevelCounters s;
-    s.smallProposed = allreduceSum(c.smallProposed);
-    s.smallAccepted = allreduceSum(c.smallAccepted);
-    s.largeProposed = allreduceSum(c.largeProposed);
-    s.largeAccepted = allreduceSum(c.largeAccepted);
-    s.invalidProposals = allreduceSum(c.invalidProposals);
+    static_cast<ChainCounters&>(s) = sumOverRanks(c);
     s.nonFinite = allreduceSum(c.nonFinite);
     s.seconds = allreduceSum(c.seconds);
     out.perLevel.push_back(s);

@@ -66,7 +66,7 @@ ErptCounters erptRow(PtEvaluator& eval, const ErptSettings& settings, double nor
     const uint64_t key = hashKey(seed, kSeedPurpose, pixel, sampleIndex);
     Rng rng(key, 7);
     const float jx = rng.uniform(), jy = rng.uniform();
-    RecordingSource source(key, Vec2((x + jx) / w, (row + jy) / h));
+    RecordingSource source(key, StreamValues{{{(x + jx) / w, (row + jy) / h}, {}, {}}});
     const float e = eval(source, seedSample);
     ++counters.seeds;
     const int chains = static_cast<int>(std::floor(rng.uniform() + e / (settings.chainLength * energyPerDeposit)));

@@ -2,6 +2,7 @@
 // The path builder as a function of a point u of primary sample space: S(u) -> splats, and the
 // scalar target I(u) = luminance of their sum (DESIGN §3). The film position comes from the first
 // two numbers of the camera stream, uniform over the whole film.
+#include <array>
 #include <vector>
 
 #include "core/sample_source.h"
@@ -24,27 +25,31 @@ class PssEvaluator {
   int width_, height_;
 };
 
+// The coordinates of a point of primary sample space, one list per stream.
+using StreamValues = std::array<std::vector<float>, kSampleStreamCount>;
+
 // Independent numbers that also keeps what each stream handed out, so that a point of primary
-// sample space found by independent sampling can become a chain's state. With `film`, the first
-// two camera numbers are that film position instead (erpt's per-pixel seeds).
+// sample space found by independent sampling can become a chain's state. With a prefix, each
+// stream first hands out the prefix's values (erpt: the film position of a per-pixel seed; a
+// population-annealing particle: its whole state), then independent numbers.
 class RecordingSource final : public SampleSource {
  public:
   explicit RecordingSource(uint64_t key) : source_(key) {}
-  RecordingSource(uint64_t key, const Vec2& film) : source_(key), film_(film), fixedFilm_(true) {}
+  RecordingSource(uint64_t key, StreamValues prefix) : source_(key), prefix_(std::move(prefix)) {}
   float next(SampleStream stream) override {
-    std::vector<float>& values = values_[static_cast<int>(stream)];
-    const bool film = fixedFilm_ && stream == SampleStream::Camera && values.size() < 2;
-    const float v = film ? film_[static_cast<int>(values.size())] : source_.next(stream);
+    const int s = static_cast<int>(stream);
+    std::vector<float>& values = values_[size_t(s)];
+    const std::vector<float>& prefix = prefix_[size_t(s)];
+    const float v = values.size() < prefix.size() ? prefix[values.size()] : source_.next(stream);
     values.push_back(v);
     return v;
   }
-  const std::vector<float>& values(SampleStream stream) const { return values_[static_cast<int>(stream)]; }
+  const std::vector<float>& values(SampleStream stream) const { return values_[static_cast<size_t>(stream)]; }
 
  private:
   IndependentSource source_;
-  Vec2 film_{0.0f};
-  bool fixedFilm_ = false;
-  std::vector<float> values_[kSampleStreamCount];
+  StreamValues prefix_;
+  StreamValues values_;
 };
 
 }  // namespace relt

@@ -5,16 +5,13 @@
 namespace relt {
 namespace {
 constexpr uint64_t kReplicaChainPurpose = 0x4e1a;
-uint64_t replicaChainKey(uint64_t seed, int chain) { return hashKey(seed, kReplicaChainPurpose, uint64_t(chain)); }
 using Clock = std::chrono::steady_clock;
 }  // namespace
 
+uint64_t replicaChainKey(uint64_t seed, int chain) { return hashKey(seed, kReplicaChainPurpose, uint64_t(chain)); }
+
 void LevelCounters::add(const LevelCounters& o) {
-  smallProposed += o.smallProposed;
-  smallAccepted += o.smallAccepted;
-  largeProposed += o.largeProposed;
-  largeAccepted += o.largeAccepted;
-  invalidProposals += o.invalidProposals;
+  ChainCounters::add(o);
   nonFinite += o.nonFinite;
   seconds += o.seconds;
 }
@@ -30,10 +27,10 @@ bool LevelEvaluator::operator()(SampleSource& u, PathSample& out, double* q) con
   return finite;
 }
 
-ReplicaChain::ReplicaChain(uint64_t seed, int chain, int level, const LevelFamily& family)
+ReplicaChain::ReplicaChain(uint64_t key, int level, const LevelFamily& family)
     : family_(family),
-      u_(replicaChainKey(seed, chain), family.sizes(level)),
-      rng_(replicaChainKey(seed, chain), 1),
+      u_(key, family.sizes(level)),
+      rng_(key, 1),
       level_(level),
       counters_(size_t(family.levels())) {
   current_.q.assign(size_t(family.levels()), 0.0);
@@ -46,8 +43,8 @@ void ReplicaChain::setLevel(int level) {
   u_.setSizes(family_.sizes(level));
 }
 
-void ReplicaChain::start(const LevelEvaluator& eval, uint64_t key) {
-  RecordingSource source(key);
+void ReplicaChain::start(const LevelEvaluator& eval, uint64_t key, const StreamValues& prefix) {
+  RecordingSource source(key, prefix);
   eval(source, current_.path, current_.q.data());
   for (int s = 0; s < kSampleStreamCount; ++s)
     u_.setState(static_cast<SampleStream>(s), source.values(static_cast<SampleStream>(s)));
@@ -56,11 +53,24 @@ void ReplicaChain::start(const LevelEvaluator& eval, uint64_t key) {
 void ReplicaChain::run(uint64_t steps, const LevelEvaluator& eval, const LevelEstimator& estimator, Film& film,
                        LargeStepSums& large) {
   const auto t0 = Clock::now();
-  for (uint64_t i = 0; i < steps; ++i) step(eval, estimator, film, large);
+  for (uint64_t i = 0; i < steps; ++i) step(eval, &estimator, &film, large);
   counters_[size_t(level_)].seconds += std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-void ReplicaChain::step(const LevelEvaluator& eval, const LevelEstimator& estimator, Film& film,
+void ReplicaChain::explore(uint64_t steps, const LevelEvaluator& eval) {
+  LargeStepSums unused(family_.levels());
+  for (uint64_t i = 0; i < steps; ++i) step(eval, nullptr, nullptr, unused);
+}
+
+StreamValues ReplicaChain::state() const {
+  StreamValues values;
+  for (int s = 0; s < kSampleStreamCount; ++s)
+    for (const PrimarySampleVector::Coordinate& c : u_.coordinates(static_cast<SampleStream>(s)))
+      values[size_t(s)].push_back(c.value);
+  return values;
+}
+
+void ReplicaChain::step(const LevelEvaluator& eval, const LevelEstimator* estimator, Film* film,
                         LargeStepSums& large) {
   const size_t k = size_t(level_);
   const bool isLarge = rng_.uniform() < family_.largeStepProbability(level_);
@@ -76,8 +86,10 @@ void ReplicaChain::step(const LevelEvaluator& eval, const LevelEstimator& estima
   const double a = acceptance(current_.q[k], proposal_.q[k]);
   if (!(proposal_.q[k] > 0.0)) ++c.invalidProposals;
   // Expected values: the current state with 1 - a, the proposal with a (thesis digest §2.7).
-  if (current_.q[k] > 0.0 && a < 1.0) estimator.splat(current_.path, current_.q.data(), level_, 1.0 - a, film);
-  if (a > 0.0) estimator.splat(proposal_.path, proposal_.q.data(), level_, a, film);
+  if (estimator) {
+    if (current_.q[k] > 0.0 && a < 1.0) estimator->splat(current_.path, current_.q.data(), level_, 1.0 - a, *film);
+    if (a > 0.0) estimator->splat(proposal_.path, proposal_.q.data(), level_, a, *film);
+  }
   if (rng_.uniformDouble() < a) {
     u_.accept();
     std::swap(current_, proposal_);

@@ -10,17 +10,17 @@
 #include "core/rng.h"
 #include "core/sampling.h"
 #include "mcmc/pss_evaluator.h"
+#include "mcmc/pssmlt.h"
 #include "pss/primary_sample_vector.h"
 #include "replica/level_estimator.h"
 
 namespace relt {
 
-// What a ladder's chains count per level (summed over chains by level held at the time).
-struct LevelCounters {
-  uint64_t smallProposed = 0, smallAccepted = 0, largeProposed = 0, largeAccepted = 0;
-  uint64_t invalidProposals = 0;  // zero target at the chain's level, or a non-finite path
-  uint64_t nonFinite = 0;         // proposals with a NaN or infinite splat (dropped, never splatted)
-  double seconds = 0.0;           // time spent stepping at this level
+// What a ladder's chains count per level (summed over chains by level held at the time). Invalid
+// proposals: zero target at the chain's level, or a non-finite path.
+struct LevelCounters : ChainCounters {
+  uint64_t nonFinite = 0;  // proposals with a NaN or infinite splat (dropped, never splatted)
+  double seconds = 0.0;    // time spent stepping at this level
   void add(const LevelCounters& o);
 };
 
@@ -44,17 +44,28 @@ class LevelEvaluator {
   const LevelFamily& family_;
 };
 
+// The random-stream key of chain c of a render.
+uint64_t replicaChainKey(uint64_t seed, int chain);
+
 class ReplicaChain {
  public:
-  ReplicaChain(uint64_t seed, int chain, int level, const LevelFamily& family);
+  // `key` seeds the chain's mutations and decisions (replicaChainKey for a render's chains).
+  ReplicaChain(uint64_t key, int level, const LevelFamily& family);
 
   // Picks a bootstrap sample in proportion to its level's target (start-up bias elimination).
   size_t pickBootstrap(const Distribution1D& bootstrap) { return bootstrap.sample(rng_.uniform()); }
-  // Starts at the point an independent source with `key` produces (a regenerated bootstrap sample).
-  void start(const LevelEvaluator& eval, uint64_t key);
-  // `steps` Metropolis steps at the current level.
+  // Picks one of `count` states uniformly (a population-annealing particle).
+  size_t pickUniform(size_t count) { return rng_.below(static_cast<uint32_t>(count)); }
+  // Starts at the point an independent source with `key` produces (a regenerated bootstrap sample),
+  // or at `prefix` (a given state) continued by that source where the path needs more numbers.
+  void start(const LevelEvaluator& eval, uint64_t key, const StreamValues& prefix = {});
+  // `steps` Metropolis steps at the current level, splatted through the estimator.
   void run(uint64_t steps, const LevelEvaluator& eval, const LevelEstimator& estimator, Film& film,
            LargeStepSums& large);
+  // `steps` Metropolis steps that splat nothing (population annealing).
+  void explore(uint64_t steps, const LevelEvaluator& eval);
+  // The current point of primary sample space.
+  StreamValues state() const;
 
   int level() const { return level_; }
   void setLevel(int level);
@@ -67,7 +78,8 @@ class ReplicaChain {
     PathSample path;
     std::vector<double> q;
   };
-  void step(const LevelEvaluator& eval, const LevelEstimator& estimator, Film& film, LargeStepSums& large);
+  // estimator and film null: nothing is splatted.
+  void step(const LevelEvaluator& eval, const LevelEstimator* estimator, Film* film, LargeStepSums& large);
 
   const LevelFamily& family_;
   PrimarySampleVector u_;

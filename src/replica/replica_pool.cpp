@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "mcmc/pssmlt.h"
+#include "replica/annealing.h"
 
 namespace relt {
 namespace {
@@ -80,12 +81,19 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
     // A level whose target the bootstrap never saw starts anywhere (its chain wanders to q > 0).
     start.emplace_back(bootstrapSum_[size_t(k)] > 0.0 ? q[size_t(k)] : std::vector<double>(samples, 1.0));
   }
+  std::vector<std::vector<StreamValues>> annealed;
+  if (settings_.init == InitKind::Annealing) annealed = annealedStarts(evaluator_, family_, q, seed, settings_.annealing);
   hosted_ = hostedBy(rank_);
   chains_.reserve(hosted_.size());
   for (int c : hosted_) {
-    ReplicaChain& chain = chains_.emplace_back(seed, c, c % m, family_);
-    const size_t index = chain.pickBootstrap(start[size_t(c % m)]);
-    chain.start(evaluator_, bootstrapKey(seed, index));
+    const int level = c % m;
+    ReplicaChain& chain = chains_.emplace_back(replicaChainKey(seed, c), level, family_);
+    if (!annealed.empty()) {
+      const std::vector<StreamValues>& particles = annealed[size_t(level)];
+      chain.start(evaluator_, replicaChainKey(seed, c), particles[chain.pickUniform(particles.size())]);
+    } else {
+      chain.start(evaluator_, bootstrapKey(seed, chain.pickBootstrap(start[size_t(level)])));
+    }
   }
 }
 

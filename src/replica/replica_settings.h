@@ -26,6 +26,17 @@ inline int chainRank(int chain, int levels, int ranks, Placement placement) {
   return placement == Placement::Spread ? chain % ranks : (chain / levels) % ranks;
 }
 
+// How chains get their first states (DESIGN §3.4).
+enum class InitKind : uint8_t {
+  Resample,   // each chain resamples the bootstrap in proportion to its level's target
+  Annealing,  // population annealing down the ladder (seed 000 Alg. 2)
+};
+
+struct AnnealingSettings {
+  int particles = 4096;
+  int mutationsPerLevel = 8;
+};
+
 struct ReplicaSettings {
   FamilySettings family;
   int ladders = 32;
@@ -34,6 +45,8 @@ struct ReplicaSettings {
   Placement placement = Placement::Spread;
   double beta = 1.0;          // MIS over levels: 1 balance, 2 power heuristic
   int bootstrap = 100000;
+  InitKind init = InitKind::Resample;
+  AnnealingSettings annealing;
   bool perLevel = false;      // also write each level's MIS-weighted contribution as an EXR layer
 };
 

@@ -86,6 +86,13 @@ TEST(RankIndependence, ReltImageIsTheSameOnOneTwoAndFourRanksWithBothPlacements)
   expectSameImage(reference, renderWithRanks(4, "relt", packed, amount + " --placement packed"));
 }
 
+TEST(RankIndependence, ReltWithPopulationAnnealingIsTheSameOnOneAndTwoRanks) {
+  // Every rank anneals all particles with the same keys, then takes its chains' starts from them.
+  const std::string dir = makeTempDir("mpi-relt-annealing");
+  const std::string amount = "--mutations-per-pixel 2 --ladders 2 --levels 4 --init annealing";
+  expectSameImage(renderWithRanks(1, "relt", dir, amount), renderWithRanks(2, "relt", dir, amount));
+}
+
 TEST(RankIndependence, ReltPerLevelLayersSumToTheImage) {
   const std::string dir = makeTempDir("mpi-relt-layers");
   const Image image =

@@ -126,6 +126,13 @@ TEST(IntegratorAgreement, ReltKitaokaWithPermutationsAndBdptAgreeOnCornellBox) {
   });
 }
 
+TEST(IntegratorAgreement, ReltRelaxedWithPopulationAnnealingAndBdptAgreeOnCornellBox) {
+  expectAgreementOnCornellBox(Integrator::Relt, Integrator::Bdpt, 16, 20, [](RenderSettings& s) {
+    s.replica.init = InitKind::Annealing;
+    s.replica.annealing.particles = 1024;
+  });
+}
+
 TEST(ReltFurnace, KitaokaFamilyMatchesAnalyticValueWithinOnePercent) {
   const std::string path = sourcePath("scenes/furnace.gltf");
   const Scene scene = loadGltf(path);

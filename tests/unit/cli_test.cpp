@@ -59,6 +59,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"UnknownFamily", "render " + kScene + " -o OUT --integrator relt --family warm", "warm"},
                       BadInvocation{"UnknownExchange", "render " + kScene + " -o OUT --integrator relt --exchange shuffle", "shuffle"},
                       BadInvocation{"PermutationBeyondTwelveLevels", "render " + kScene + " -o OUT --integrator relt --levels 13 --exchange permutation", "at most 12"},
+                      BadInvocation{"UnknownInit", "render " + kScene + " -o OUT --integrator relt --init warm", "warm"},
                       BadInvocation{"OneLevel", "render " + kScene + " -o OUT --integrator relt --levels 1", "levels"},
                       BadInvocation{"MissingScene", "render /nonexistent.gltf -o OUT", "nonexistent"},
                       BadInvocation{"UnknownIntegrator", "render " + kScene + " -o OUT --integrator magic", "magic"},
