@@ -20,7 +20,7 @@ constexpr int kExitInternal = 1;
 struct Options {
   relt::RenderSettings render;
   std::string integrator = "bdpt", mis = "power";
-  std::string family = "relaxed", exchange = "deo", placement = "spread", misLevels = "balance", init = "resample";
+  std::string family = "kitaoka", exchange = "deo", placement = "spread", misLevels = "balance", init = "resample";
   CLI::Option* chains = nullptr;
   std::vector<CLI::Option*> reltOnly;  // options that only relt takes
   std::string infoScene;

@@ -21,7 +21,7 @@ TABLE="$ROOT/out/bench/relt_overhead.md"
 } > "$TABLE"
 for k in "${INTERVALS[@]}"; do
   "${MPIRUN[@]}" -np 2 "$BUILD_DIR/relt" render "$ROOT/scenes/cornell-box.gltf" -o "$OUT/k$k.exr" \
-    --stats "$OUT/k$k.json" --integrator relt --mutations-per-pixel "$MPP" --exchange-interval "$k" 2>/dev/null
+    --stats "$OUT/k$k.json" --integrator relt --family relaxed --mutations-per-pixel "$MPP" --exchange-interval "$k" 2>/dev/null
   /usr/bin/python3 - "$OUT/k$k.json" "$k" >> "$TABLE" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))

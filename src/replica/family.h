@@ -28,7 +28,7 @@ using ClassLuminance = std::array<double, kPathClassCount>;
 ClassLuminance classLuminance(const PathSample& sample);
 
 struct FamilySettings {
-  FamilyKind kind = FamilyKind::Relaxed;
+  FamilyKind kind = FamilyKind::Kitaoka;  // the default: see docs/BENCHMARKS.md (relt equal time)
   int levels = 8;              // relaxed (kitaoka always has 4)
   double relaxedEps1 = 0.01;   // eps_1 as a multiple of the bootstrap mean of I
   double relaxedRatio = 10.0;  // eps_{k+1} / eps_k

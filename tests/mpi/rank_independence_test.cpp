@@ -77,7 +77,7 @@ TEST(RankIndependence, ReltImageIsTheSameOnOneTwoAndFourRanksWithBothPlacements)
   // 3 ladders of 5 levels: 15 chains split unevenly; exchanges are permutations, so every level's
   // label moves between ranks under spread placement.
   const std::string amount =
-      "--mutations-per-pixel 4 --ladders 3 --levels 5 --exchange permutation --exchange-interval 4";
+      "--mutations-per-pixel 4 --ladders 3 --family relaxed --levels 5 --exchange permutation --exchange-interval 4";
   const std::string spread = makeTempDir("mpi-relt-spread"), packed = makeTempDir("mpi-relt-packed");
   const Image reference = renderWithRanks(1, "relt", spread, amount);
   expectSameImage(reference, renderWithRanks(2, "relt", spread, amount));
@@ -89,7 +89,7 @@ TEST(RankIndependence, ReltImageIsTheSameOnOneTwoAndFourRanksWithBothPlacements)
 TEST(RankIndependence, ReltWithPopulationAnnealingIsTheSameOnOneAndTwoRanks) {
   // Every rank anneals all particles with the same keys, then takes its chains' starts from them.
   const std::string dir = makeTempDir("mpi-relt-annealing");
-  const std::string amount = "--mutations-per-pixel 2 --ladders 2 --levels 4 --init annealing";
+  const std::string amount = "--mutations-per-pixel 2 --ladders 2 --family relaxed --levels 4 --init annealing";
   expectSameImage(renderWithRanks(1, "relt", dir, amount), renderWithRanks(2, "relt", dir, amount));
 }
 

@@ -58,7 +58,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"LevelsWithKitaoka", "render " + kScene + " -o OUT --integrator relt --family kitaoka --levels 6", "kitaoka"},
                       BadInvocation{"UnknownFamily", "render " + kScene + " -o OUT --integrator relt --family warm", "warm"},
                       BadInvocation{"UnknownExchange", "render " + kScene + " -o OUT --integrator relt --exchange shuffle", "shuffle"},
-                      BadInvocation{"PermutationBeyondTwelveLevels", "render " + kScene + " -o OUT --integrator relt --levels 13 --exchange permutation", "at most 12"},
+                      BadInvocation{"PermutationBeyondTwelveLevels", "render " + kScene + " -o OUT --integrator relt --family relaxed --levels 13 --exchange permutation", "at most 12"},
                       BadInvocation{"UnknownInit", "render " + kScene + " -o OUT --integrator relt --init warm", "warm"},
                       BadInvocation{"OneLevel", "render " + kScene + " -o OUT --integrator relt --levels 1", "levels"},
                       BadInvocation{"MissingScene", "render /nonexistent.gltf -o OUT", "nonexistent"},
@@ -121,7 +121,7 @@ TEST(Cli, CompareReportsZeroErrorForAnImageAgainstItselfAndWritesTheDifference) 
 TEST(Cli, ReltWritesLadderDiagnosticsToStats) {
   const std::string dir = makeTempDir("cli-relt");
   const CommandResult r = runCommand(reltBinary() + " render " + kScene + " -o " + dir + "/r.exr --stats " + dir +
-                                     "/r.json --integrator relt --levels 4 --ladders 2 --mutations-per-pixel 2 "
+                                     "/r.json --integrator relt --family relaxed --levels 4 --ladders 2 --mutations-per-pixel 2 "
                                      "--width 24 --height 16");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::ifstream stats(dir + "/r.json");

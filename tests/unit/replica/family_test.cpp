@@ -52,6 +52,7 @@ TEST(LevelFamily, KitaokaLevelsAreSpecificIndirectFullUniform) {
 
 TEST(LevelFamily, RelaxedEpsGrowGeometricallyWithTheMeanTarget) {
   FamilySettings s;
+  s.kind = FamilyKind::Relaxed;
   s.levels = 4;
   s.relaxedEps1 = 0.1;
   s.relaxedRatio = 3.0;
@@ -72,7 +73,8 @@ TEST(LevelFamily, RelaxedEpsGrowGeometricallyWithTheMeanTarget) {
 TEST(LevelEstimator, WeightsOfEveryClassSumToOne) {
   for (double beta : {1.0, 2.0}) {
     for (bool kitaoka : {false, true}) {
-      FamilySettings s = kitaoka ? kitaokaSettings() : FamilySettings{};
+      FamilySettings s = kitaokaSettings();
+      if (!kitaoka) s.kind = FamilyKind::Relaxed;
       const LevelFamily f(s, 3.0);
       LevelEstimator e(f, beta);
       std::vector<double> b(static_cast<size_t>(f.levels()));

@@ -23,6 +23,7 @@ struct Fixture {
     renderer = std::make_unique<Renderer>(loadGltf(test::sourcePath("scenes/cornell-box.gltf")), s);
     eval = std::make_unique<PssEvaluator>(renderer->context(), 16, 12);
     settings.ladders = 3;
+    settings.family.kind = FamilyKind::Relaxed;
     settings.family.levels = 5;
     settings.exchange.move = ExchangeMove::Permutation;
     settings.bootstrap = 4000;
