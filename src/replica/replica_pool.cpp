@@ -83,9 +83,11 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   }
   std::vector<std::vector<StreamValues>> annealed;
   if (settings_.init == InitKind::Annealing) annealed = annealedStarts(evaluator_, family_, q, seed, settings_.annealing);
-  hosted_ = hostedBy(rank_);
-  chains_.reserve(hosted_.size());
-  for (int c : hosted_) {
+  hostedByRank_.resize(size_t(ranks_));
+  for (int c = 0; c < chainCount(); ++c)
+    hostedByRank_[size_t(chainRank(c, m, ranks_, settings_.placement))].push_back(c);
+  chains_.reserve(hosted().size());
+  for (int c : hosted()) {
     const int level = c % m;
     ReplicaChain& chain = chains_.emplace_back(replicaChainKey(seed, c), level, family_);
     if (!annealed.empty()) {
@@ -97,13 +99,6 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   }
 }
 
-std::vector<int> ReplicaPool::hostedBy(int rank) const {
-  std::vector<int> out;
-  for (int c = 0; c < chainCount(); ++c)
-    if (chainRank(c, levels(), ranks_, settings_.placement) == rank) out.push_back(c);
-  return out;
-}
-
 void ReplicaPool::runRound(uint64_t steps, std::vector<Film>& films) {
   for (ReplicaChain& chain : chains_) {
     Film& film = films.size() > 1 ? films[size_t(chain.level())] : films[0];
@@ -112,7 +107,7 @@ void ReplicaPool::runRound(uint64_t steps, std::vector<Film>& films) {
 }
 
 size_t ReplicaPool::messageLength(int rank) const {
-  return active_ ? hostedBy(rank).size() * size_t(levels()) + size_t(levels()) + 2 : 2;
+  return active_ ? hostedByRank_[size_t(rank)].size() * size_t(levels()) + size_t(levels()) + 2 : 2;
 }
 
 std::vector<double> ReplicaPool::roundMessage(double elapsed) {
@@ -138,7 +133,7 @@ double ReplicaPool::finishRound(const std::vector<std::vector<double>>& messages
   std::vector<const double*> targetsOf(size_t(chainCount()), nullptr);
   for (int r = 0; r < int(messages.size()); ++r) {
     const std::vector<double>& msg = messages[size_t(r)];
-    const std::vector<int> ids = hostedBy(r);
+    const std::vector<int>& ids = hostedByRank_[size_t(r)];
     for (size_t i = 0; i < ids.size(); ++i) targetsOf[size_t(ids[i])] = msg.data() + i * size_t(m);
     const double* large = msg.data() + ids.size() * size_t(m);
     for (int k = 0; k < m; ++k) largeSum_[size_t(k)] += large[k];
@@ -161,7 +156,7 @@ double ReplicaPool::finishRound(const std::vector<std::vector<double>>& messages
       trips_.visit(c, i);
     }
   }
-  for (size_t i = 0; i < chains_.size(); ++i) chains_[i].setLevel(levelOf_[size_t(hosted_[i])]);
+  for (size_t i = 0; i < chains_.size(); ++i) chains_[i].setLevel(levelOf_[size_t(hosted()[i])]);
 
   // Normalisers from the bootstrap and every large step so far, frozen until the next round.
   std::vector<double> b(static_cast<size_t>(m));

@@ -56,7 +56,7 @@ class ReplicaPool {
   int levelOf(int chain) const { return levelOf_[size_t(chain)]; }
 
  private:
-  std::vector<int> hostedBy(int rank) const;
+  const std::vector<int>& hosted() const { return hostedByRank_[size_t(rank_)]; }
 
   ReplicaSettings settings_;
   uint64_t seed_;
@@ -65,8 +65,8 @@ class ReplicaPool {
   LevelEstimator estimator_;
   LevelEvaluator evaluator_;
   bool active_ = false;
-  std::vector<int> hosted_;             // global ids of this rank's chains
-  std::vector<ReplicaChain> chains_;    // in hosted_ order
+  std::vector<std::vector<int>> hostedByRank_;  // global chain ids each rank hosts (placement)
+  std::vector<ReplicaChain> chains_;    // this rank's, in hosted() order
   std::vector<int> levelOf_;            // every chain's level (kept identical on every rank)
   std::vector<double> bootstrapSum_;    // sum of q_k over the bootstrap
   double bootstrapCount_ = 0.0;
