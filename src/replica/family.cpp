@@ -12,10 +12,10 @@ std::optional<FamilyKind> parseFamily(std::string_view name) {
 
 const char* familyName(FamilyKind kind) { return kind == FamilyKind::Kitaoka ? "kitaoka" : "relaxed"; }
 
-ClassLuminance classLuminance(const PathSample& sample) {
+std::optional<ClassLuminance> classLuminance(const PathSample& sample) {
   ClassLuminance L{};
   for (const Splat& s : sample.splats) {
-    if (!isFinite(s.value)) return ClassLuminance{};
+    if (!isFinite(s.value)) return std::nullopt;
     L[static_cast<size_t>(s.cls)] += luminance(s.value);
   }
   return L;

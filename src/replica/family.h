@@ -24,8 +24,8 @@ std::optional<FamilyKind> parseFamily(std::string_view name);
 const char* familyName(FamilyKind kind);
 
 using ClassLuminance = std::array<double, kPathClassCount>;
-// L_n(u): luminance of the class-n splats of one path (0 for all if any splat is not finite).
-ClassLuminance classLuminance(const PathSample& sample);
+// L_n(u): luminance of the class-n splats of one path; nothing if any splat is not finite.
+std::optional<ClassLuminance> classLuminance(const PathSample& sample);
 
 struct FamilySettings {
   FamilyKind kind = FamilyKind::Kitaoka;  // the default: see docs/BENCHMARKS.md (relt equal time)

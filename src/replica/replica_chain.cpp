@@ -18,13 +18,13 @@ void LevelCounters::add(const LevelCounters& o) {
 
 bool LevelEvaluator::operator()(SampleSource& u, PathSample& out, double* q) const {
   eval_(u, out);
-  const bool finite = out.finite();
-  if (finite) {
-    family_.targets(classLuminance(out), q);
+  const std::optional<ClassLuminance> L = classLuminance(out);
+  if (L) {
+    family_.targets(*L, q);
   } else {
     for (int k = 0; k < family_.levels(); ++k) q[k] = 0.0;
   }
-  return finite;
+  return L.has_value();
 }
 
 ReplicaChain::ReplicaChain(uint64_t key, int level, const LevelFamily& family)

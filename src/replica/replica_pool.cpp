@@ -31,7 +31,7 @@ std::vector<double> bootstrapClassLuminance(PssEvaluator& eval, uint64_t seed, i
   for (int i = first; i < count; i += stride) {
     IndependentSource u(bootstrapKey(seed, uint64_t(i)));
     eval(u, sample);
-    const ClassLuminance L = classLuminance(sample);
+    const ClassLuminance L = classLuminance(sample).value_or(ClassLuminance{});  // non-finite: target 0
     std::copy(L.begin(), L.end(), out.begin() + static_cast<std::ptrdiff_t>(size_t(i) * kPathClassCount));
   }
   return out;
