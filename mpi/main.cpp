@@ -32,10 +32,10 @@ void addReplicaOptions(CLI::App& cmd, Options& o) {
   relt::ReplicaSettings& r = o.render.replica;
   auto only = [&](CLI::Option* opt) { o.reltOnly.push_back(opt); };
   only(cmd.add_option("--family", o.family, "relt: target family of the levels")
-           ->check(CLI::IsMember({"kitaoka", "relaxed"}))
+           ->check(CLI::IsMember({"kitaoka", "relaxed", "tempered"}))
            ->capture_default_str());
-  only(cmd.add_option("--levels", r.family.levels, "relt: levels per ladder (relaxed; kitaoka has 4)")
-           ->check(CLI::Range(2, 64))
+  only(cmd.add_option("--levels", r.family.levels, "relt: levels per ladder (relaxed, tempered; kitaoka has 4)")
+           ->check(CLI::Range(2, relt::kMaxLevels))
            ->capture_default_str());
   only(cmd.add_option("--ladders", r.ladders, "relt: number of ladders (chains = ladders x levels)")
            ->check(CLI::Range(1, 1 << 16))
@@ -63,6 +63,17 @@ void addReplicaOptions(CLI::App& cmd, Options& o) {
            ->check(CLI::Range(1.0, 1e6))
            ->capture_default_str());
   only(cmd.add_option("--kitaoka-delta", r.family.kitaokaDelta, "relt kitaoka: weight of L5 in the specific replica")
+           ->check(CLI::Range(0.0, 1.0))
+           ->capture_default_str());
+  only(cmd.add_option("--temperature-max", r.family.temperatureMax, "relt tempered: temperature of the top level")
+           ->check(CLI::Range(1.0, 1e8))
+           ->capture_default_str());
+  only(cmd.add_option("--regularisation", r.family.regularisation,
+                      "relt tempered: rho_0 of the connection roughness floor rho_0 (1 + n)^-gamma (0 = off)")
+           ->check(CLI::Range(0.0, 1.0))
+           ->capture_default_str());
+  only(cmd.add_option("--regularisation-decay", r.family.regularisationDecay,
+                      "relt tempered: gamma of the regularisation schedule")
            ->check(CLI::Range(0.0, 1.0))
            ->capture_default_str());
   only(cmd.add_option("--energy-rings", r.exchange.energyRings, "relt eem: number of energy rings (0: one per level)")
@@ -139,10 +150,20 @@ void checkReplicaOptions(Options& o) {
   r.replica.placement = *relt::parsePlacement(o.placement);
   r.replica.beta = o.misLevels == "power" ? 2.0 : 1.0;
   r.replica.init = o.init == "annealing" ? relt::InitKind::Annealing : relt::InitKind::Resample;
+  // Family options belong to their family.
+  const std::vector<std::pair<std::string, relt::FamilyKind>> owner = {
+      {"--relaxed-eps", relt::FamilyKind::Relaxed},       {"--relaxed-ratio", relt::FamilyKind::Relaxed},
+      {"--kitaoka-delta", relt::FamilyKind::Kitaoka},     {"--temperature-max", relt::FamilyKind::Tempered},
+      {"--regularisation", relt::FamilyKind::Tempered},   {"--regularisation-decay", relt::FamilyKind::Tempered}};
+  for (CLI::Option* opt : o.reltOnly) {
+    if (opt->count() == 0) continue;
+    for (const auto& [name, kind] : owner)
+      if (opt->get_name() == name && kind != r.replica.family.kind)
+        throw relt::InputError("", name, std::string("only for --family ") + relt::familyName(kind));
+  }
   if (r.replica.family.kind == relt::FamilyKind::Kitaoka) {
     for (CLI::Option* opt : o.reltOnly)
-      if (opt->count() > 0 && (opt->get_name() == "--levels" || opt->get_name() == "--relaxed-eps" ||
-                               opt->get_name() == "--relaxed-ratio"))
+      if (opt->count() > 0 && opt->get_name() == "--levels")
         throw relt::InputError("", opt->get_name(), "not for --family kitaoka (its four levels are fixed)");
     r.replica.family.levels = 4;
   }

@@ -32,10 +32,10 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   const ReplicaSettings rs = effectiveReplicaSettings(settings);
   PssEvaluator eval(renderer.context(), settings.width, settings.height);
 
-  // Bootstrap: sample i on rank i mod P; every rank then holds every sample's class luminances.
-  std::vector<double> luminance = bootstrapClassLuminance(eval, settings.seed, rs.bootstrap, session.rank(), session.size());
-  allreduceSum(luminance);
-  ReplicaPool pool(eval, rs, settings.seed, luminance, session.rank(), session.size());
+  // Bootstrap: sample i on rank i mod P; every rank then holds every sample's features.
+  std::vector<double> features = bootstrapFeatures(eval, rs.family, settings.seed, rs.bootstrap, session.rank(), session.size());
+  allreduceSum(features);
+  ReplicaPool pool(eval, rs, settings.seed, features, session.rank(), session.size());
   films.assign(rs.perLevel ? size_t(pool.levels()) : 1, Film(settings.width, settings.height));
 
   const double area = double(settings.width) * settings.height;

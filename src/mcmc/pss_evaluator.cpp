@@ -9,4 +9,11 @@ float PssEvaluator::operator()(SampleSource& u, PathSample& out) {
   return out.target();
 }
 
+float PssEvaluator::operator()(SampleSource& u, PathSample& out, const Tempering* tempering) {
+  bdpt_.setTempering(tempering);
+  const float target = (*this)(u, out);
+  bdpt_.setTempering(nullptr);
+  return target;
+}
+
 }  // namespace relt

@@ -9,8 +9,9 @@ float shadingCorrection(const SurfacePoint& sp, const Vec3& wo, const Vec3& wi) 
   return den > 0.0f ? std::abs(glm::dot(wo, sp.ns)) * std::abs(glm::dot(wi, sp.ng)) / den : 0.0f;
 }
 
-Color surfaceF(const PathVertex& v, const Vec3& w, TransportMode mode) {
-  Color f = v.bsdf->eval(v.wo, w, mode);
+// bsdf: replaces the vertex's own (a tempered connection vertex).
+Color surfaceF(const PathVertex& v, const Vec3& w, TransportMode mode, const Bsdf* bsdf = nullptr) {
+  Color f = (bsdf ? *bsdf : *v.bsdf).eval(v.wo, w, mode);
   if (mode == TransportMode::Importance) f *= shadingCorrection(v.sp, v.wo, w);
   return f;
 }
@@ -24,16 +25,17 @@ float cosAt(const PathVertex& v, const Vec3& w) {
 float remap0(float pdf) { return pdf != 0.0f ? pdf : 1.0f; }
 
 // Area density with which vertex `from`, reached from direction `arrive` (unit, towards the vertex
-// before it in the generating direction), generates vertex `to`.
+// before it in the generating direction), generates vertex `to`. bsdf: replaces from's own.
 float pdfGenerate(const PathContext& ctx, const PathVertex& from, const Vec3& arrive, const PathVertex& to,
-                  bool roulette) {
+                  bool roulette, const Bsdf* bsdf = nullptr) {
   const Vec3 w = glm::normalize(to.sp.p - from.sp.p);
   float pdfW = 0.0f;
   switch (from.type) {
     case PathVertex::Type::Camera: pdfW = ctx.camera.pdfDirection(w); break;
     case PathVertex::Type::Light: pdfW = ctx.lights.pdfDirection(from.light, from.sp, w); break;
     case PathVertex::Type::Surface:
-      pdfW = from.bsdf->pdf(arrive, w) * (roulette ? continuationProbability(from.bsdf->material()) : 1.0f);
+      pdfW = (bsdf ? *bsdf : *from.bsdf).pdf(arrive, w) *
+             (roulette ? continuationProbability(from.bsdf->material()) : 1.0f);
       break;
   }
   return solidAngleToArea(pdfW, from, to);
@@ -136,6 +138,7 @@ void Bdpt::generateLightSubpath(SampleSource& source, size_t maxVertices) {
 void Bdpt::trace(const Vec2& film, SampleSource& source, PathSample& out) {
   generateCameraSubpath(film, source, static_cast<size_t>(ctx_.settings.maxDepth) + 1);
   generateLightSubpath(source, static_cast<size_t>(ctx_.settings.maxDepth));
+  if (tempering_) out.levelTargets.assign(size_t(tempering_->levels()), 0.0);
   const int maxDepth = ctx_.settings.maxDepth;
   for (int t = 1; t <= static_cast<int>(camera_.size()); ++t)
     for (int s = 0; s <= static_cast<int>(light_.size()); ++s) {
@@ -160,78 +163,161 @@ bool Bdpt::traceStrategy(int s, int t, const Vec2& film, SampleSource& source, P
   return out.splats.size() > before;
 }
 
+// A strategy's contribution is front * f_L * f_C: f_L, f_C are the BSDFs of the surface vertices
+// the connection joins (absent at a light or camera end) and front everything else. Tempering
+// re-evaluates only those two BSDFs and the MIS weight.
 void Bdpt::connect(int s, int t, const Vec2& film, SampleSource& source, PathSample& out) {
-  Color contrib(0.0f);
+  const bool tempered = tempering_ != nullptr;
+  Color front(0.0f);
+  const PathVertex *lightEnd = nullptr, *cameraEnd = nullptr;
+  Vec3 wL(0.0f), wC(0.0f);  // directions the end BSDFs are evaluated towards
   Vec2 splatFilm = film;
   PathClass cls;
   PathVertex sampled;
+  LightPoint lp;
   std::span<PathVertex> lightSpan(light_.data(), static_cast<size_t>(s));
   std::span<PathVertex> cameraSpan(camera_.data(), static_cast<size_t>(t));
 
   if (s == 0) {
     const PathVertex& c = camera_[t - 1];
     if (!c.isSurface()) return;
-    contrib = c.beta * ctx_.lights.emitted(c.sp, c.wo);
-    if (isBlack(contrib)) return;
+    front = c.beta * ctx_.lights.emitted(c.sp, c.wo);
     cls = anyDelta(cameraSpan.subspan(1, t - 2)) ? PathClass::L0 : PathClass::L1;
   } else if (t == 1) {
     const PathVertex& l = light_[s - 1];
-    if (l.isSurface() && l.delta) return;
+    if (!tempered && l.isSurface() && l.delta) return;
     const Vec3 toCam = ctx_.camera.position() - l.sp.p;
     const float dist2 = glm::dot(toCam, toCam);
     if (!(dist2 > 0.0f)) return;
     const Vec3 w = toCam / std::sqrt(dist2);
     const auto fp = ctx_.camera.filmPosition(-w);
     if (!fp) return;
-    const Color f = l.isSurface() ? surfaceF(l, w, TransportMode::Importance)
-                    : l.delta     ? ctx_.lights.intensity(l.light, w)
-                                  : ctx_.lights.emitted(l.sp, w);
     const float cosCam = glm::dot(ctx_.camera.forward(), -w);
-    contrib = l.beta * f * (cosAt(l, w) * cosCam / dist2 * ctx_.camera.importance(-w));
-    if (isBlack(contrib) || ctx_.tracer.occludedToPoint(l.sp.p, l.sp.ng, ctx_.camera.position())) return;
+    front = l.beta * (cosAt(l, w) * cosCam / dist2 * ctx_.camera.importance(-w));
+    if (l.isSurface()) {
+      lightEnd = &l;
+      wL = w;
+    } else {
+      front *= l.delta ? ctx_.lights.intensity(l.light, w) : ctx_.lights.emitted(l.sp, w);
+    }
     splatFilm = *fp;
     cls = PathClass::L4;
   } else if (s == 1) {
     const PathVertex& c = camera_[t - 1];
-    if (c.delta) return;
+    if (!tempered && c.delta) return;
     const float uPick = source.next(SampleStream::Connection);
     const Vec2 uPos = source.next2(SampleStream::Connection);
-    const LightPoint lp = ctx_.lights.samplePoint(uPick, uPos);
+    lp = ctx_.lights.samplePoint(uPick, uPos);
     sampled = lightVertex(lp);
     const Vec3 d = sampled.sp.p - c.sp.p;
     const float dist2 = glm::dot(d, d);
     if (!(dist2 > 0.0f)) return;
     const Vec3 w = d / std::sqrt(dist2);
     const Color le = lp.delta ? ctx_.lights.intensity(lp.light, -w) : ctx_.lights.emitted(lp.sp, -w);
-    contrib = c.beta * surfaceF(c, w, TransportMode::Radiance) * le * sampled.beta *
-              (cosAt(c, w) * cosAt(sampled, w) / dist2);
-    if (isBlack(contrib)) return;
-    const bool blocked = lp.delta ? ctx_.tracer.occludedToPoint(c.sp.p, c.sp.ng, lp.sp.p)
-                                  : ctx_.tracer.occluded(c.sp.p, c.sp.ng, lp.sp.p, lp.sp.ng);
-    if (blocked) return;
+    front = c.beta * le * sampled.beta * (cosAt(c, w) * cosAt(sampled, w) / dist2);
+    cameraEnd = &c;
+    wC = w;
     lightSpan = std::span<PathVertex>(&sampled, 1);
     cls = PathClass::L2;
   } else {
     const PathVertex& l = light_[s - 1];
     const PathVertex& c = camera_[t - 1];
-    if (l.delta || c.delta) return;
+    if (!tempered && (l.delta || c.delta)) return;
     const Vec3 d = c.sp.p - l.sp.p;
     const float dist2 = glm::dot(d, d);
     if (!(dist2 > 0.0f)) return;
     const Vec3 w = d / std::sqrt(dist2);
-    contrib = l.beta * surfaceF(l, w, TransportMode::Importance) * surfaceF(c, -w, TransportMode::Radiance) *
-              c.beta * (cosAt(l, w) * cosAt(c, w) / dist2);
-    if (isBlack(contrib) || ctx_.tracer.occluded(l.sp.p, l.sp.ng, c.sp.p, c.sp.ng)) return;
+    front = l.beta * c.beta * (cosAt(l, w) * cosAt(c, w) / dist2);
+    lightEnd = &l;
+    cameraEnd = &c;
+    wL = w;
+    wC = -w;
     cls = PathClass::L5;
   }
+  if (isBlack(front)) return;
 
-  const float weight = misWeight(lightSpan, cameraSpan);
-  out.add(splatFilm, contrib * weight, cls);
-  if (observer_) observer_(lightSpan, cameraSpan, weight, contrib);
+  auto value = [&](const Bsdf* bL, const Bsdf* bC) {
+    Color v = front;
+    if (lightEnd) v *= surfaceF(*lightEnd, wL, TransportMode::Importance, bL);
+    if (cameraEnd && !isBlack(v)) v *= surfaceF(*cameraEnd, wC, TransportMode::Radiance, bC);
+    return v;
+  };
+  const bool smoothEnd = (lightEnd && lightEnd->delta) || (cameraEnd && cameraEnd->delta);
+  const Color contrib = smoothEnd ? Color(0.0f) : value(nullptr, nullptr);
+  bool any = !isBlack(contrib);
+
+  // Tempered levels: the end BSDFs each level uses (none: the level's contribution is contrib).
+  // From the hottest level down: a zero there is a zero for every cooler level too (same
+  // geometry, narrower lobes), which skips most connections through smooth surfaces.
+  auto temperable = [](const PathVertex* v) { return v && v->bsdf->material().kind != MaterialKind::Lambert; };
+  const PathVertex* tl = temperable(lightEnd) ? lightEnd : nullptr;
+  const PathVertex* tc = temperable(cameraEnd) ? cameraEnd : nullptr;
+  const int levels = tempered && (tl || tc) ? tempering_->levels() : 0;
+  if (levels > 0) {
+    levelValue_.assign(size_t(levels), Color(0.0f));
+    levelOwn_.assign(size_t(levels), 0);
+    levelL_.resize(size_t(levels));
+    levelC_.resize(size_t(levels));
+    bool cooler = true;  // the levels below may still contribute
+    for (int k = levels - 1; k >= 0; --k) {
+      const auto roughL = tl ? tempering_->roughness(tl->bsdf->material(), k) : std::nullopt;
+      const auto roughC = tc ? tempering_->roughness(tc->bsdf->material(), k) : std::nullopt;
+      if (!roughL && !roughC) {
+        levelOwn_[size_t(k)] = 1;
+        continue;
+      }
+      if (!cooler) continue;
+      std::optional<Bsdf>&bL = levelL_[size_t(k)], &bC = levelC_[size_t(k)];
+      bL.reset();
+      bC.reset();
+      if (roughL) bL.emplace(tl->bsdf->material(), tl->sp.ns, tl->sp.ng, *roughL);
+      if (roughC) bC.emplace(tc->bsdf->material(), tc->sp.ns, tc->sp.ng, *roughC);
+      levelValue_[size_t(k)] = value(bL ? &*bL : nullptr, bC ? &*bC : nullptr);
+      cooler = !isBlack(levelValue_[size_t(k)]);
+      any |= cooler;
+    }
+  }
+  if (!any) return;
+
+  // One visibility ray for the untempered and every tempered contribution.
+  bool blocked = false;
+  if (s == 0) {
+    blocked = false;  // the camera subpath found the emitter itself
+  } else if (t == 1) {
+    blocked = ctx_.tracer.occludedToPoint(light_[s - 1].sp.p, light_[s - 1].sp.ng, ctx_.camera.position());
+  } else if (s == 1) {
+    blocked = lp.delta ? ctx_.tracer.occludedToPoint(cameraEnd->sp.p, cameraEnd->sp.ng, lp.sp.p)
+                       : ctx_.tracer.occluded(cameraEnd->sp.p, cameraEnd->sp.ng, lp.sp.p, lp.sp.ng);
+  } else {
+    blocked = ctx_.tracer.occluded(lightEnd->sp.p, lightEnd->sp.ng, cameraEnd->sp.p, cameraEnd->sp.ng);
+  }
+  if (blocked) return;
+
+  float weight = 0.0f;
+  if (!isBlack(contrib)) {
+    weight = misWeight(lightSpan, cameraSpan);
+    out.add(splatFilm, contrib * weight, cls);
+    if (observer_) observer_(lightSpan, cameraSpan, weight, contrib);
+  }
+  if (!tempered) return;
+  const double own = luminance(contrib * weight);
+  if (levels == 0) {
+    for (double& q : out.levelTargets) q += own;
+    return;
+  }
+  for (int k = 0; k < levels; ++k) {
+    const std::optional<Bsdf>&bL = levelL_[size_t(k)], &bC = levelC_[size_t(k)];
+    if (levelOwn_[size_t(k)]) {
+      out.levelTargets[size_t(k)] += own;
+    } else if (!isBlack(levelValue_[size_t(k)])) {
+      const float w = misWeight(lightSpan, cameraSpan, bL ? &*bL : nullptr, bC ? &*bC : nullptr);
+      out.levelTargets[size_t(k)] += luminance(levelValue_[size_t(k)]) * double(w);
+    }
+  }
 }
 
-
-float Bdpt::misWeight(std::span<PathVertex> light, std::span<PathVertex> camera) const {
+float Bdpt::misWeight(std::span<PathVertex> light, std::span<PathVertex> camera, const Bsdf* lightEnd,
+                      const Bsdf* cameraEnd) const {
   const int s = static_cast<int>(light.size()), t = static_cast<int>(camera.size()), n = s + t;
   if (n == 2) return 1.0f;
   // Full path x_0 (light end) .. x_{n-1} (camera). fromLight[i] / fromCamera[i]: area density of
@@ -244,6 +330,8 @@ float Bdpt::misWeight(std::span<PathVertex> light, std::span<PathVertex> camera)
     fromCamera[i] = i < s ? v.pdfRev : v.pdfFwd;
     delta[i] = v.isSurface() && v.delta;
   }
+  if (lightEnd) delta[s - 1] = lightEnd->isDelta();
+  if (cameraEnd) delta[s] = cameraEnd->isDelta();
   const PathVertex* ls = s > 0 ? &light[s - 1] : nullptr;
   const PathVertex* lsPrev = s > 1 ? &light[s - 2] : nullptr;
   const PathVertex& ct = camera[t - 1];
@@ -252,10 +340,10 @@ float Bdpt::misWeight(std::span<PathVertex> light, std::span<PathVertex> camera)
   // Densities that change because the subpaths are now joined (the four vertices at the seam).
   if (ls) {
     const Vec3 toLs = glm::normalize(ls->sp.p - ct.sp.p);
-    fromCamera[s - 1] = pdfGenerate(ctx_, ct, ct.wo, *ls, roulette_);
-    if (lsPrev) fromCamera[s - 2] = pdfGenerate(ctx_, *ls, -toLs, *lsPrev, roulette_);
-    fromLight[s] = pdfGenerate(ctx_, *ls, ls->wo, ct, roulette_);
-    if (ctPrev) fromLight[s + 1] = pdfGenerate(ctx_, ct, toLs, *ctPrev, roulette_);
+    fromCamera[s - 1] = pdfGenerate(ctx_, ct, ct.wo, *ls, roulette_, cameraEnd);
+    if (lsPrev) fromCamera[s - 2] = pdfGenerate(ctx_, *ls, -toLs, *lsPrev, roulette_, lightEnd);
+    fromLight[s] = pdfGenerate(ctx_, *ls, ls->wo, ct, roulette_, lightEnd);
+    if (ctPrev) fromLight[s + 1] = pdfGenerate(ctx_, ct, toLs, *ctPrev, roulette_, cameraEnd);
   } else {
     // s = 0: the camera subpath ended on an emitter; the light end would have chosen it by power.
     const uint32_t tri = ct.sp.triangle;

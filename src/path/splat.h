@@ -26,7 +26,12 @@ struct Splat {
 
 struct PathSample {
   std::vector<Splat> splats;
-  void clear() { splats.clear(); }
+  // Tempered family only (Bdpt::setTempering): every level's target for this path.
+  std::vector<double> levelTargets;
+  void clear() {
+    splats.clear();
+    levelTargets.clear();
+  }
   void add(const Vec2& film, const Color& value, PathClass cls) {
     if (!isBlack(value) || !isFinite(value)) splats.push_back({film, value, cls});
   }

@@ -47,12 +47,19 @@ nlohmann::json RenderSettings::toJson() const {
     if (integrator == Integrator::Relt) {
       const ReplicaSettings& r = replica;
       j["family"] = familyName(r.family.kind);
-      if (r.family.kind == FamilyKind::Relaxed) {
-        j["levels"] = r.family.levels;
-        j["relaxed_eps1"] = r.family.relaxedEps1;
-        j["relaxed_ratio"] = r.family.relaxedRatio;
-      } else {
-        j["kitaoka_delta"] = r.family.kitaokaDelta;
+      switch (r.family.kind) {
+        case FamilyKind::Relaxed:
+          j["levels"] = r.family.levels;
+          j["relaxed_eps1"] = r.family.relaxedEps1;
+          j["relaxed_ratio"] = r.family.relaxedRatio;
+          break;
+        case FamilyKind::Kitaoka: j["kitaoka_delta"] = r.family.kitaokaDelta; break;
+        case FamilyKind::Tempered:
+          j["levels"] = r.family.levels;
+          j["temperature_max"] = r.family.temperatureMax;
+          j["regularisation"] = r.family.regularisation;
+          if (r.family.regularisation > 0.0) j["regularisation_decay"] = r.family.regularisationDecay;
+          break;
       }
       j["ladders"] = r.ladders;
       j["exchange"] = exchangeMoveName(r.exchange.move);

@@ -1,16 +1,26 @@
 #include "replica/family.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace relt {
 
 std::optional<FamilyKind> parseFamily(std::string_view name) {
   if (name == "kitaoka") return FamilyKind::Kitaoka;
   if (name == "relaxed") return FamilyKind::Relaxed;
+  if (name == "tempered") return FamilyKind::Tempered;
   return std::nullopt;
 }
 
-const char* familyName(FamilyKind kind) { return kind == FamilyKind::Kitaoka ? "kitaoka" : "relaxed"; }
+const char* familyName(FamilyKind kind) {
+  switch (kind) {
+    case FamilyKind::Kitaoka: return "kitaoka";
+    case FamilyKind::Relaxed: return "relaxed";
+    case FamilyKind::Tempered: return "tempered";
+  }
+  return "?";
+}
 
 std::optional<ClassLuminance> classLuminance(const PathSample& sample) {
   ClassLuminance L{};
@@ -42,6 +52,22 @@ LevelFamily::LevelFamily(const FamilySettings& settings, double meanTarget) : ki
     levels_.push_back({"uniform", 1.0, {0, 0, 0, 0, 0, 0}, allButL0, normal, 1.0f});
     return;
   }
+  if (kind_ == FamilyKind::Tempered) {
+    // Every level estimates every class; its target comes from the path builder.
+    temperatures_ = geometricTemperatures(settings.levels, settings.temperatureMax);
+    for (double t : temperatures_) {
+      char name[32];
+      std::snprintf(name, sizeof name, "T=%.4g", t);
+      Level level{name, 0.0, {}, {}, settings.sizes, settings.largeStepProbability};
+      level.estimates.fill(true);
+      levels_.push_back(level);
+      tempering_.scale.push_back(static_cast<float>(std::sqrt(t)));
+    }
+    regularisation_ = settings.regularisation;
+    regularisationDecay_ = settings.regularisationDecay;
+    setRegularisationStep(0);
+    return;
+  }
   // Relaxed (Otsu et al.): q_k = I + eps_k, eps_0 = 0, eps_k = eps_1 ratio^(k-1) * mean I.
   for (int k = 0; k < settings.levels; ++k) {
     const double eps = k == 0 ? 0.0 : settings.relaxedEps1 * std::pow(settings.relaxedRatio, k - 1) * meanTarget;
@@ -52,12 +78,55 @@ LevelFamily::LevelFamily(const FamilySettings& settings, double meanTarget) : ki
   }
 }
 
-void LevelFamily::targets(const ClassLuminance& L, double* q) const {
+int LevelFamily::featureCount(const FamilySettings& settings) {
+  return settings.kind == FamilyKind::Tempered ? settings.levels : kPathClassCount;
+}
+
+double LevelFamily::meanTarget(const FamilySettings& settings, const std::vector<double>& features) {
+  const size_t n = size_t(featureCount(settings)), samples = features.size() / n;
+  double sum = 0.0;
+  for (size_t i = 0; i < samples; ++i) {
+    if (settings.kind == FamilyKind::Tempered) {
+      sum += features[i * n];  // level 0: T = 1
+    } else {
+      for (size_t c = 0; c < n; ++c) sum += features[i * n + c];
+    }
+  }
+  return samples ? sum / double(samples) : 0.0;
+}
+
+bool LevelFamily::features(const PathSample& sample, double* f) const {
+  const std::optional<ClassLuminance> L = classLuminance(sample);
+  if (kind_ != FamilyKind::Tempered) {
+    if (L) std::copy(L->begin(), L->end(), f);
+    else std::fill_n(f, kPathClassCount, 0.0);
+    return L.has_value();
+  }
+  for (int k = 0; k < levels(); ++k) {
+    const double q = L && size_t(k) < sample.levelTargets.size() ? sample.levelTargets[size_t(k)] : 0.0;
+    f[k] = std::isfinite(q) && q > 0.0 ? q : 0.0;  // a non-finite tempered value only loses that level
+  }
+  return L.has_value();
+}
+
+void LevelFamily::targets(const double* f, double* q) const {
+  if (kind_ == FamilyKind::Tempered) {
+    std::copy_n(f, levels_.size(), q);
+    return;
+  }
   for (size_t k = 0; k < levels_.size(); ++k) {
     double v = levels_[k].offset;
-    for (size_t n = 0; n < L.size(); ++n) v += levels_[k].weight[n] * L[n];
+    for (size_t n = 0; n < kPathClassCount; ++n) v += levels_[k].weight[n] * f[n];
     q[k] = v;
   }
+}
+
+bool LevelFamily::setRegularisationStep(uint64_t n) {
+  if (!(regularisation_ > 0.0)) return false;
+  const float reg = float(regularisation_ * std::pow(1.0 + double(n), -regularisationDecay_));
+  if (n > 0 && std::abs(reg - tempering_.minAlpha) < 0.01f * tempering_.minAlpha) return false;
+  tempering_.minAlpha = reg;
+  return n > 0;
 }
 
 }  // namespace relt

@@ -1,5 +1,7 @@
 #include "replica/replica_chain.h"
 
+#include <array>
+
 #include "mcmc/metropolis.h"
 
 namespace relt {
@@ -17,14 +19,15 @@ void LevelCounters::add(const LevelCounters& o) {
 }
 
 bool LevelEvaluator::operator()(SampleSource& u, PathSample& out, double* q) const {
-  eval_(u, out);
-  const std::optional<ClassLuminance> L = classLuminance(out);
-  if (L) {
-    family_.targets(*L, q);
+  eval_(u, out, family_.tempering());
+  std::array<double, kMaxLevels> f;
+  const bool finite = family_.features(out, f.data());
+  if (finite) {
+    family_.targets(f.data(), q);
   } else {
     for (int k = 0; k < family_.levels(); ++k) q[k] = 0.0;
   }
-  return L.has_value();
+  return finite;
 }
 
 ReplicaChain::ReplicaChain(uint64_t key, int level, const LevelFamily& family)
@@ -48,6 +51,11 @@ void ReplicaChain::start(const LevelEvaluator& eval, uint64_t key, const StreamV
   eval(source, current_.path, current_.q.data());
   for (int s = 0; s < kSampleStreamCount; ++s)
     u_.setState(static_cast<SampleStream>(s), source.values(static_cast<SampleStream>(s)));
+}
+
+void ReplicaChain::refresh(const LevelEvaluator& eval) {
+  const uint64_t key = (uint64_t(rng_.nextU32()) << 32) | rng_.nextU32();  // only if the path needs more numbers
+  start(eval, key, state());
 }
 
 void ReplicaChain::run(uint64_t steps, const LevelEvaluator& eval, const LevelEstimator& estimator, Film& film,

@@ -62,6 +62,8 @@ class ReplicaChain {
   // `steps` Metropolis steps at the current level, splatted through the estimator.
   void run(uint64_t steps, const LevelEvaluator& eval, const LevelEstimator& estimator, Film& film,
            LargeStepSums& large);
+  // Evaluates the current state again (the targets changed: regularisation).
+  void refresh(const LevelEvaluator& eval);
   // `steps` Metropolis steps that splat nothing (population annealing).
   void explore(uint64_t steps, const LevelEvaluator& eval);
   // The current point of primary sample space.

@@ -10,52 +10,42 @@ namespace {
 
 constexpr uint64_t kExchangePurpose = 0xe8c4;
 
-double meanTarget(const std::vector<double>& luminance) {
-  const size_t samples = luminance.size() / kPathClassCount;
-  double sum = 0.0;
-  for (double v : luminance) sum += v;
-  return samples ? sum / double(samples) : 0.0;
-}
-
-ClassLuminance sampleLuminance(const std::vector<double>& luminance, size_t i) {
-  ClassLuminance L;
-  std::copy_n(luminance.begin() + static_cast<std::ptrdiff_t>(i * kPathClassCount), kPathClassCount, L.begin());
-  return L;
-}
-
 }  // namespace
 
-std::vector<double> bootstrapClassLuminance(PssEvaluator& eval, uint64_t seed, int count, int first, int stride) {
-  std::vector<double> out(size_t(count) * kPathClassCount, 0.0);
+std::vector<double> bootstrapFeatures(PssEvaluator& eval, const FamilySettings& family, uint64_t seed, int count,
+                                      int first, int stride) {
+  const LevelFamily f(family, 0.0);  // the features do not depend on the mean
+  const size_t n = size_t(LevelFamily::featureCount(family));
+  std::vector<double> out(size_t(count) * n, 0.0);
   PathSample sample;
   for (int i = first; i < count; i += stride) {
     IndependentSource u(bootstrapKey(seed, uint64_t(i)));
-    eval(u, sample);
-    const ClassLuminance L = classLuminance(sample).value_or(ClassLuminance{});  // non-finite: target 0
-    std::copy(L.begin(), L.end(), out.begin() + static_cast<std::ptrdiff_t>(size_t(i) * kPathClassCount));
+    eval(u, sample, f.tempering());
+    f.features(sample, out.data() + size_t(i) * n);  // non-finite: features (hence targets) 0
   }
   return out;
 }
 
 ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, uint64_t seed,
-                         const std::vector<double>& bootstrapLuminance, int rank, int ranks)
+                         const std::vector<double>& bootstrap, int rank, int ranks)
     : settings_(settings),
       seed_(seed),
       rank_(rank),
       ranks_(ranks),
-      family_(settings.family, meanTarget(bootstrapLuminance)),
+      family_(settings.family, LevelFamily::meanTarget(settings.family, bootstrap)),
       estimator_(family_, settings.beta),
       evaluator_(eval, family_),
       tally_(family_.levels()),
       trips_(settings.ladders * family_.levels(), family_.levels()) {
   const int m = levels();
-  const size_t samples = bootstrapLuminance.size() / kPathClassCount;
+  const size_t features = size_t(LevelFamily::featureCount(settings.family));
+  const size_t samples = bootstrap.size() / features;
   // Every level's targets on the bootstrap: its normaliser and its starting distribution.
   std::vector<std::vector<double>> q(static_cast<size_t>(m), std::vector<double>(samples));
   std::vector<double> qi(static_cast<size_t>(m));
   bootstrapSum_.assign(size_t(m), 0.0);
   for (size_t i = 0; i < samples; ++i) {
-    family_.targets(sampleLuminance(bootstrapLuminance, i), qi.data());
+    family_.targets(bootstrap.data() + i * features, qi.data());
     for (int k = 0; k < m; ++k) {
       q[size_t(k)][i] = qi[size_t(k)];
       bootstrapSum_[size_t(k)] += qi[size_t(k)];
@@ -74,7 +64,7 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
     trips_.visit(c, c % m);
   }
   // Nothing visible (I = 0 everywhere the bootstrap looked): no chain runs, the image stays black.
-  active_ = meanTarget(bootstrapLuminance) > 0.0;
+  active_ = LevelFamily::meanTarget(settings.family, bootstrap) > 0.0;
   if (!active_) return;
   std::vector<Distribution1D> start;
   for (int k = 0; k < m; ++k) {
@@ -100,6 +90,17 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
 }
 
 void ReplicaPool::runRound(uint64_t steps, std::vector<Film>& films) {
+  // Regularisation shrinks with the steps taken so far. When it moves, the targets are new: states
+  // are evaluated again, and the normalisers start again from this round's large steps (sums of
+  // the old targets would bias them; every rank does the same).
+  if (family_.setRegularisationStep(stepsPerChain_)) {
+    for (ReplicaChain& chain : chains_) chain.refresh(evaluator_);
+    bootstrapSum_.assign(bootstrapSum_.size(), 0.0);
+    bootstrapCount_ = 0.0;
+    largeSum_.assign(largeSum_.size(), 0.0);
+    largeCount_ = 0.0;
+  }
+  stepsPerChain_ += steps;
   for (ReplicaChain& chain : chains_) {
     Film& film = films.size() > 1 ? films[size_t(chain.level())] : films[0];
     chain.run(steps, evaluator_, estimator_, film, pendingLarge_);
@@ -158,11 +159,14 @@ double ReplicaPool::finishRound(const std::vector<std::vector<double>>& messages
   }
   for (size_t i = 0; i < chains_.size(); ++i) chains_[i].setLevel(levelOf_[size_t(hosted()[i])]);
 
-  // Normalisers from the bootstrap and every large step so far, frozen until the next round.
-  std::vector<double> b(static_cast<size_t>(m));
+  // Normalisers from the bootstrap and every large step so far, frozen until the next round (no
+  // samples since the regularisation moved: the previous ones stay).
   const double n = bootstrapCount_ + largeCount_;
-  for (int k = 0; k < m; ++k) b[size_t(k)] = n > 0.0 ? (bootstrapSum_[size_t(k)] + largeSum_[size_t(k)]) / n : 0.0;
-  estimator_.setNormalisers(b);
+  if (n > 0.0) {
+    std::vector<double> b(static_cast<size_t>(m));
+    for (int k = 0; k < m; ++k) b[size_t(k)] = (bootstrapSum_[size_t(k)] + largeSum_[size_t(k)]) / n;
+    estimator_.setNormalisers(b);
+  }
   return elapsed;
 }
 

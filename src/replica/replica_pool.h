@@ -19,15 +19,16 @@
 
 namespace relt {
 
-// Class luminances of bootstrap samples first, first + stride, ... (kPathClassCount per sample,
-// others 0), for ranks to fill their share and sum.
-std::vector<double> bootstrapClassLuminance(PssEvaluator& eval, uint64_t seed, int count, int first, int stride);
+// The family's features (LevelFamily::featureCount per sample) of bootstrap samples first,
+// first + stride, ... (others 0), for ranks to fill their share and sum.
+std::vector<double> bootstrapFeatures(PssEvaluator& eval, const FamilySettings& family, uint64_t seed, int count,
+                                      int first, int stride);
 
 class ReplicaPool {
  public:
-  // `bootstrapLuminance` holds every bootstrap sample's class luminances (summed over ranks).
-  ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, uint64_t seed,
-              const std::vector<double>& bootstrapLuminance, int rank, int ranks);
+  // `bootstrap` holds every bootstrap sample's features (bootstrapFeatures, summed over ranks).
+  ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, uint64_t seed, const std::vector<double>& bootstrap,
+              int rank, int ranks);
   ReplicaPool(const ReplicaPool&) = delete;  // chains refer to family_
   ReplicaPool& operator=(const ReplicaPool&) = delete;
 
@@ -73,6 +74,7 @@ class ReplicaPool {
   std::vector<double> largeSum_;        // all ranks' large-step sums so far
   double largeCount_ = 0.0;
   LargeStepSums pendingLarge_;          // this rank's, since its last message
+  uint64_t stepsPerChain_ = 0;          // steps every chain has taken (regularisation schedule)
   ExchangeTally tally_;
   RoundTrips trips_;
 };

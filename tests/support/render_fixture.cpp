@@ -14,14 +14,18 @@ namespace relt::test {
 
 Image renderInProcess(const std::string& scene, RenderSettings settings) {
   settings.scenePath = scene;
-  Renderer renderer(loadGltf(scene), settings);
+  return renderInProcess(loadGltf(scene), settings);
+}
+
+Image renderInProcess(Scene scene, RenderSettings settings) {
+  Renderer renderer(std::move(scene), settings);
   const RenderSettings& s = renderer.settings();
   Film film(s.width, s.height);
   if (s.integrator == Integrator::Relt) {
     // One process hosts every chain; each round's message is the only one (as mpi/relt_driver).
     PssEvaluator eval(renderer.context(), s.width, s.height);
     const ReplicaSettings rs = effectiveReplicaSettings(s);
-    ReplicaPool pool(eval, rs, s.seed, bootstrapClassLuminance(eval, s.seed, rs.bootstrap, 0, 1), 0, 1);
+    ReplicaPool pool(eval, rs, s.seed, bootstrapFeatures(eval, rs.family, s.seed, rs.bootstrap, 0, 1), 0, 1);
     std::vector<Film> films(1, film);
     const double area = double(s.width) * s.height;
     const ReplicaSchedule schedule(area, pool.chainCount(), rs.exchangeInterval, std::nullopt,

@@ -6,10 +6,13 @@
 
 #include "image/image.h"
 #include "render/settings.h"
+#include "scene/scene.h"
 
 namespace relt::test {
 
 Image renderInProcess(const std::string& scene, RenderSettings settings);
+// The same for a scene already loaded (and possibly edited by the test).
+Image renderInProcess(Scene scene, RenderSettings settings);
 
 // Mean of a rectangular region [x0, x1) x [y0, y1) over all channels (luminance is not needed
 // for agreement tests: every channel must agree).

@@ -55,6 +55,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"ErptFilterWithBdpt", "render " + kScene + " -o OUT --erpt-proposal-filter", "only for erpt"},
                       BadInvocation{"LaddersWithBdpt", "render " + kScene + " -o OUT --ladders 4", "only for --integrator relt"},
                       BadInvocation{"ChainsWithRelt", "render " + kScene + " -o OUT --integrator relt --chains 8", "--ladders"},
+                      BadInvocation{"TemperatureMaxWithKitaoka", "render " + kScene + " -o OUT --integrator relt --temperature-max 100", "only for --family tempered"},
+                      BadInvocation{"RelaxedEpsWithTempered", "render " + kScene + " -o OUT --integrator relt --family tempered --relaxed-eps 0.1", "only for --family relaxed"},
                       BadInvocation{"LevelsWithKitaoka", "render " + kScene + " -o OUT --integrator relt --family kitaoka --levels 6", "kitaoka"},
                       BadInvocation{"UnknownFamily", "render " + kScene + " -o OUT --integrator relt --family warm", "warm"},
                       BadInvocation{"UnknownExchange", "render " + kScene + " -o OUT --integrator relt --exchange shuffle", "shuffle"},

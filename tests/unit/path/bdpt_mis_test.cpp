@@ -116,6 +116,52 @@ void checkScene(const std::string& name, MisHeuristic heuristic, bool roulette =
   if (name == "glass-cube") EXPECT_GT(withDelta, 0) << "glass-cube paths should cross smooth glass";
 }
 
+// Tempered weights (the tempered family's targets): with the connection vertices' BSDFs replaced
+// by roughened ones, the renderer's weight equals the brute-force weight of the path whose two
+// connection vertices carry those BSDFs for every strategy. ring with glossy metals, so that
+// connections at metal vertices exist untempered and are observed.
+void checkTemperedWeights(float scale) {
+  RenderSettings settings;
+  settings.width = settings.height = 32;
+  Scene scene = loadGltf(test::sourcePath("scenes/ring.gltf"));
+  for (Material& m : scene.materials)
+    if (m.kind == MaterialKind::Conductor) m.alpha = 0.04f;
+  Renderer renderer(std::move(scene), settings);
+  Bdpt bdpt(renderer.context());
+  Tempering tempering;
+  tempering.scale = {scale};
+  int checked = 0;
+  bdpt.setObserver([&](std::span<const PathVertex> light, std::span<const PathVertex> camera, float, const Color&) {
+    std::vector<PathVertex> l(light.begin(), light.end()), c(camera.begin(), camera.end());
+    auto tempered = [&](const PathVertex& v) -> std::optional<Bsdf> {
+      if (!v.isSurface()) return std::nullopt;
+      const auto rough = tempering.roughness(v.bsdf->material(), 0);
+      if (!rough) return std::nullopt;
+      return Bsdf(v.bsdf->material(), v.sp.ns, v.sp.ng, *rough);
+    };
+    const std::optional<Bsdf> bL = l.empty() ? std::nullopt : tempered(l.back());
+    const std::optional<Bsdf> bC = tempered(c.back());
+    if (!bL && !bC) return;
+    const float w = bdpt.misWeight(l, c, bL ? &*bL : nullptr, bC ? &*bC : nullptr);
+    Record rec;
+    rec.s = static_cast<int>(l.size());
+    rec.path = l;
+    for (auto it = c.rbegin(); it != c.rend(); ++it) rec.path.push_back(*it);
+    if (bL) rec.path[size_t(rec.s - 1)].bsdf = bL;
+    if (bC) rec.path[size_t(rec.s)].bsdf = bC;
+    const double expected = bruteForceWeight(renderer, rec, MisHeuristic::Power, true);
+    ASSERT_NEAR(w, expected, 2e-4 * std::max(1.0, expected)) << "strategy s=" << rec.s;
+    ++checked;
+  });
+  PathSample sample;
+  for (uint64_t i = 0; i < 4000 && checked < 5000; ++i) {
+    IndependentSource source(hashKey(77, i));
+    bdpt.trace(Vec2(source.next(SampleStream::Camera) * 32, source.next(SampleStream::Camera) * 32), source, sample);
+    sample.clear();
+  }
+  EXPECT_GT(checked, 200);
+}
+
 }  // namespace
 
 TEST(BdptMis, PowerHeuristicWeightsMatchBruteForceOnCornellBox) { checkScene("cornell-box", MisHeuristic::Power); }
@@ -124,4 +170,9 @@ TEST(BdptMis, BalanceHeuristicWeightsMatchBruteForceOnCornellBox) { checkScene("
 // Without roulette (what mmlt uses) the densities carry no continuation probability.
 TEST(BdptMis, WeightsWithoutRouletteMatchBruteForceOnGlassCube) {
   checkScene("glass-cube", MisHeuristic::Power, false);
+}
+
+TEST(BdptMis, TemperedConnectionWeightsMatchBruteForceOnGlossyRing) {
+  checkTemperedWeights(10.0f);  // T = 100
+  checkTemperedWeights(50.0f);  // T = 2500
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "replica/family.h"
 #include "replica/level_estimator.h"
@@ -106,4 +107,60 @@ TEST(LevelEstimator, SplatsEachClassWithItsFactor) {
   EXPECT_EQ(film.data()[3], 0.0);
   e.splat(p, q, 2, 0.5, film);  // the full level: its L2 splat, weighted over indirect, full, uniform
   EXPECT_NEAR(film.data()[3], 0.5 / (q[1] + q[2] + q[3]), 1e-6);
+}
+
+TEST(TemperedFamily, LevelsAreGeometricTemperaturesThatEstimateEveryClass) {
+  FamilySettings s;
+  s.kind = FamilyKind::Tempered;
+  s.levels = 3;
+  s.temperatureMax = 100.0;
+  const LevelFamily f(s, 1.0);
+  ASSERT_EQ(f.levels(), 3);
+  ASSERT_NE(f.tempering(), nullptr);
+  EXPECT_EQ(LevelFamily::featureCount(s), 3);
+  EXPECT_DOUBLE_EQ(f.temperature(1), 10.0);
+  EXPECT_FLOAT_EQ(f.tempering()->scale[2], 10.0f);  // sqrt(T)
+  for (int k = 0; k < 3; ++k)
+    for (int n = 0; n < kPathClassCount; ++n) EXPECT_TRUE(f.estimates(k, n));
+  // Features are the targets themselves; the mean of I is level 0's.
+  const double features[3] = {1.0, 2.0, 3.0};
+  double q[3];
+  f.targets(features, q);
+  EXPECT_EQ(q[1], 2.0);
+  EXPECT_DOUBLE_EQ(LevelFamily::meanTarget(s, {1.0, 5.0, 9.0, 3.0, 5.0, 9.0}), 2.0);
+}
+
+TEST(TemperedFamily, PathFeaturesAreItsLevelTargetsAndNothingForANonFinitePath) {
+  FamilySettings s;
+  s.kind = FamilyKind::Tempered;
+  s.levels = 2;
+  const LevelFamily f(s, 1.0);
+  PathSample p;
+  p.add({0.5f, 0.5f}, Color(1.0f), PathClass::L1);
+  p.levelTargets = {1.0, std::numeric_limits<double>::infinity()};
+  double features[2];
+  EXPECT_TRUE(f.features(p, features));
+  EXPECT_EQ(features[0], 1.0);
+  EXPECT_EQ(features[1], 0.0);  // a non-finite tempered value loses that level only
+  p.add({0.5f, 0.5f}, Color(NAN), PathClass::L2);
+  EXPECT_FALSE(f.features(p, features));
+  EXPECT_EQ(features[0], 0.0);
+}
+
+TEST(TemperedFamily, RegularisationShrinksAsAPowerLawInStepsOfAtLeastOnePercent) {
+  FamilySettings s;
+  s.kind = FamilyKind::Tempered;
+  s.regularisation = 0.1;
+  s.regularisationDecay = 0.5;
+  LevelFamily f(s, 1.0);
+  EXPECT_FLOAT_EQ(f.tempering()->minAlpha, 0.1f);    // reg(0) = rho_0
+  EXPECT_FALSE(f.setRegularisationStep(0));
+  EXPECT_FALSE(f.setRegularisationStep(0));           // (1 + n)^-gamma barely moved: no new targets
+  EXPECT_TRUE(f.setRegularisationStep(3));            // 0.1 / 2
+  EXPECT_FLOAT_EQ(f.tempering()->minAlpha, 0.05f);
+  EXPECT_FALSE(f.setRegularisationStep(3));
+  s.regularisation = 0.0;
+  LevelFamily off(s, 1.0);
+  EXPECT_FALSE(off.setRegularisationStep(100));
+  EXPECT_EQ(off.tempering()->minAlpha, 0.0f);
 }

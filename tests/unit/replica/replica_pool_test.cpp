@@ -46,7 +46,7 @@ TEST(ReplicaPool, TwoSimulatedRanksGiveTheLevelsAndImageOfOne) {
   for (Placement placement : {Placement::Spread, Placement::Packed}) {
     Fixture fx;
     fx.settings.placement = placement;
-    const std::vector<double> lum = bootstrapClassLuminance(*fx.eval, 5, fx.settings.bootstrap, 0, 1);
+    const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
     ReplicaPool one(*fx.eval, fx.settings, 5, lum, 0, 1);
     ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
     ASSERT_TRUE(one.active());
