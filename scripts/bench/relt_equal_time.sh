@@ -4,7 +4,8 @@
 # reference (relt compare). References are the long bdpt renders of equal_time.sh
 # (out/bench/equal-time/<scene>-reference.exr); missing ones are rendered for REF_SECONDS.
 # Writes out/bench/relt_equal_time.md (final RMSE table), out/bench/relt-curves/<scene>.csv and
-# <scene>.png (RMSE against time), and each run's final PNG.
+# <scene>.png (RMSE against time), and each run's final PNG. Each run keeps its own curve and table
+# row, so a rerun of some configurations (CONFIGS) updates them and keeps the others' results.
 # Usage: scripts/bench/relt_equal_time.sh [SECONDS] [SCENES...]   (defaults 60; glass-cube water-box ring)
 #        env: SNAP (default 5), REF_SECONDS (default 600), CONFIGS (names, default all)
 set -euo pipefail
@@ -25,8 +26,11 @@ declare -A ARGS=(
   [relaxed-permutation]="--integrator relt --family relaxed --exchange permutation"
   [kitaoka-deo]="--integrator relt --family kitaoka --exchange deo"
   [kitaoka-permutation]="--integrator relt --family kitaoka --exchange permutation"
+  [tempered-deo]="--integrator relt --family tempered --exchange deo"
+  [tempered-permutation]="--integrator relt --family tempered --exchange permutation"
 )
-read -r -a NAMES <<< "${CONFIGS:-pssmlt relaxed-deo relaxed-permutation kitaoka-deo kitaoka-permutation}"
+ALL="pssmlt relaxed-deo relaxed-permutation kitaoka-deo kitaoka-permutation tempered-deo tempered-permutation"
+read -r -a NAMES <<< "${CONFIGS:-$ALL}"
 
 TABLE="$ROOT/out/bench/relt_equal_time.md"
 {
@@ -46,7 +50,6 @@ for scene in "${SCENES[@]}"; do
   [ -f "$ref" ] || "${MPIRUN[@]}" -np 2 "$BUILD_DIR/relt" render "$ROOT/scenes/$scene.gltf" -o "$ref" \
     --integrator bdpt --time "$REF_SECONDS" --seed 99 2>/dev/null
   csv="$OUT/$scene.csv"
-  echo "configuration,seconds,rmse,rel_mse" > "$csv"
   for name in "${NAMES[@]}"; do
     run="$OUT/$scene-$name"
     rm -rf "$run.snaps" && mkdir -p "$run.snaps"
@@ -67,13 +70,14 @@ for scene in "${SCENES[@]}"; do
       sleep 0.2
     done
     wait "$pid"
+    : > "$run.csv"
     for snap in "$run.snaps"/*.exr; do
       t=$(basename "$snap" .exr)
       read -r rmse rel < <(compare "$snap" "$ref")
-      echo "$name,$t,$rmse,$rel" >> "$csv"
+      echo "$name,$t,$rmse,$rel" >> "$run.csv"
     done
     read -r rmse rel < <(compare "$run.exr" "$ref")
-    /usr/bin/python3 - "$run.json" "$scene" "$name" "$rmse" "$rel" >> "$TABLE" <<'PY'
+    /usr/bin/python3 - "$run.json" "$scene" "$name" "$rmse" "$rel" > "$run.row" <<'PY'
 import json, sys
 j = json.load(open(sys.argv[1]))
 swaps, trips = "-", "-"
@@ -83,6 +87,11 @@ if "relt" in j:
     trips = str(j["relt"]["round_trips"])
 print("| %s | %s | %.5f | %.5f | %d | %s | %s |" % (sys.argv[2], sys.argv[3], float(sys.argv[4]), float(sys.argv[5]), j["mutations"], swaps, trips))
 PY
+  done
+  echo "configuration,seconds,rmse,rel_mse" > "$csv"
+  for name in $ALL; do
+    [ -f "$OUT/$scene-$name.csv" ] && cat "$OUT/$scene-$name.csv" >> "$csv"
+    [ -f "$OUT/$scene-$name.row" ] && cat "$OUT/$scene-$name.row" >> "$TABLE"
   done
   /usr/bin/python3 - "$csv" "$OUT/$scene.png" "$scene" <<'PY'
 import csv, sys
