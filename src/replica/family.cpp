@@ -7,9 +7,8 @@
 namespace relt {
 
 std::optional<FamilyKind> parseFamily(std::string_view name) {
-  if (name == "kitaoka") return FamilyKind::Kitaoka;
-  if (name == "relaxed") return FamilyKind::Relaxed;
-  if (name == "tempered") return FamilyKind::Tempered;
+  for (FamilyKind kind : {FamilyKind::Kitaoka, FamilyKind::Relaxed, FamilyKind::Tempered})
+    if (name == familyName(kind)) return kind;
   return std::nullopt;
 }
 

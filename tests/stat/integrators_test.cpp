@@ -99,15 +99,6 @@ static void expectAgreementOnCornellBox(Integrator first, Integrator second, int
   expectAgreement(loadGltf(sourcePath("scenes/cornell-box.gltf")), first, second, spp, seeds, tweak);
 }
 
-// ring with glossy metals (alpha 0.04 instead of mirrors): there tempering changes the targets a
-// lot (alpha up to 2 at T = 2500), where cornell-box (all diffuse) leaves every level equal.
-static Scene glossyRing() {
-  Scene scene = loadGltf(sourcePath("scenes/ring.gltf"));
-  for (Material& m : scene.materials)
-    if (m.kind == MaterialKind::Conductor) m.alpha = 0.04f;
-  return scene;
-}
-
 TEST(IntegratorAgreement, PtAndBdptAgreeOnCornellBox) {
   expectAgreementOnCornellBox(Integrator::PathTracing, Integrator::Bdpt, 16, 10);
 }

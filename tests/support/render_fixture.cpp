@@ -9,12 +9,20 @@
 #include "replica/replica_pool.h"
 #include "replica/replica_schedule.h"
 #include "scene/gltf_loader.h"
+#include "test_support.h"
 
 namespace relt::test {
 
 Image renderInProcess(const std::string& scene, RenderSettings settings) {
   settings.scenePath = scene;
   return renderInProcess(loadGltf(scene), settings);
+}
+
+Scene glossyRing() {
+  Scene scene = loadGltf(sourcePath("scenes/ring.gltf"));
+  for (Material& m : scene.materials)
+    if (m.kind == MaterialKind::Conductor) m.alpha = 0.04f;
+  return scene;
 }
 
 Image renderInProcess(Scene scene, RenderSettings settings) {

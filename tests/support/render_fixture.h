@@ -14,6 +14,10 @@ Image renderInProcess(const std::string& scene, RenderSettings settings);
 // The same for a scene already loaded (and possibly edited by the test).
 Image renderInProcess(Scene scene, RenderSettings settings);
 
+// scenes/ring.gltf with glossy metals (alpha 0.04 instead of mirrors): there tempering changes the
+// targets a lot (alpha up to 2 at T = 2500), and connections at metal vertices exist untempered.
+Scene glossyRing();
+
 // Mean of a rectangular region [x0, x1) x [y0, y1) over all channels (luminance is not needed
 // for agreement tests: every channel must agree).
 double regionMean(const Image& image, int x0, int y0, int x1, int y1);

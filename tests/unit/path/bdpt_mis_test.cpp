@@ -10,6 +10,7 @@
 #include "path/bdpt.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
+#include "render_fixture.h"
 #include "test_support.h"
 
 using namespace relt;
@@ -123,10 +124,7 @@ void checkScene(const std::string& name, MisHeuristic heuristic, bool roulette =
 void checkTemperedWeights(float scale) {
   RenderSettings settings;
   settings.width = settings.height = 32;
-  Scene scene = loadGltf(test::sourcePath("scenes/ring.gltf"));
-  for (Material& m : scene.materials)
-    if (m.kind == MaterialKind::Conductor) m.alpha = 0.04f;
-  Renderer renderer(std::move(scene), settings);
+  Renderer renderer(test::glossyRing(), settings);
   Bdpt bdpt(renderer.context());
   Tempering tempering;
   tempering.scale = {scale};
