@@ -103,3 +103,26 @@ std::vector<std::vector<double>> allgatherv(const std::vector<double>& mine, con
   return out;
 }
 }  // namespace relt::mpi
+
+namespace relt::mpi {
+std::vector<std::vector<uint64_t>> transfer(const std::vector<Payload>& sends, const std::vector<int>& receiveFrom) {
+  constexpr int kTag = 7;
+  std::vector<std::vector<uint64_t>> received(receiveFrom.size());
+  timed([&] {
+    std::vector<MPI_Request> requests(sends.size());
+    for (size_t i = 0; i < sends.size(); ++i)
+      MPI_Isend(sends[i].data.data(), static_cast<int>(sends[i].data.size()), MPI_UINT64_T, sends[i].rank, kTag,
+                MPI_COMM_WORLD, &requests[i]);
+    for (size_t i = 0; i < receiveFrom.size(); ++i) {
+      MPI_Status status;
+      MPI_Probe(receiveFrom[i], kTag, MPI_COMM_WORLD, &status);
+      int count = 0;
+      MPI_Get_count(&status, MPI_UINT64_T, &count);
+      received[i].resize(static_cast<size_t>(count));
+      MPI_Recv(received[i].data(), count, MPI_UINT64_T, receiveFrom[i], kTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    }
+    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+  });
+  return received;
+}
+}  // namespace relt::mpi

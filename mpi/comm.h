@@ -41,3 +41,14 @@ std::vector<double> allgather(double value);
 // to all in advance, so one MPI_Allgatherv suffices).
 std::vector<std::vector<double>> allgatherv(const std::vector<double>& mine, const std::vector<size_t>& lengths);
 }  // namespace relt::mpi
+
+namespace relt::mpi {
+// Point-to-point payloads of any length: `sends` go out (rank, data), and one payload arrives from
+// each rank of `receiveFrom`, returned in that order. Between two ranks payloads keep their order.
+// Counted as collective time (every rank of a plan takes part).
+struct Payload {
+  int rank;
+  std::vector<uint64_t> data;
+};
+std::vector<std::vector<uint64_t>> transfer(const std::vector<Payload>& sends, const std::vector<int>& receiveFrom);
+}  // namespace relt::mpi

@@ -49,6 +49,11 @@ void addReplicaOptions(CLI::App& cmd, Options& o) {
   only(cmd.add_option("--placement", o.placement, "relt: chains over ranks (spread: chain c on rank c mod P; packed: whole ladders)")
            ->check(CLI::IsMember({"spread", "packed"}))
            ->capture_default_str());
+  only(cmd.add_option("--balance-window", r.balanceWindow,
+                      "relt: seconds of stepping between moves of chains to ranks in proportion to their measured "
+                      "speed (0: placement never changes)")
+           ->check(CLI::Range(0.0, 1e6))
+           ->capture_default_str());
   only(cmd.add_option("--mis-levels", o.misLevels, "relt: MIS heuristic over levels")
            ->check(CLI::IsMember({"balance", "power"}))
            ->capture_default_str());

@@ -25,6 +25,22 @@ std::vector<double> reducedSum(const std::vector<Film>& films) {
   return sums;
 }
 
+// Carries out the pool's planned chain moves: states travel point to point, then every rank commits.
+void migrateChains(ReplicaPool& pool, int rank) {
+  std::vector<Payload> sends;
+  std::vector<int> from, chains;
+  for (const ChainMove& m : pool.plannedMoves()) {
+    if (m.from == rank) sends.push_back({m.to, pool.exportChain(m.chain)});
+    if (m.to == rank) {
+      from.push_back(m.from);
+      chains.push_back(m.chain);
+    }
+  }
+  const std::vector<std::vector<uint64_t>> states = transfer(sends, from);
+  for (size_t i = 0; i < states.size(); ++i) pool.importChain(chains[i], states[i]);
+  pool.commitMoves();
+}
+
 }  // namespace
 
 ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSettings& settings,
@@ -42,7 +58,10 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   const ReplicaSchedule schedule(area, pool.chainCount(), rs.exchangeInterval, settings.seconds,
                                  settings.mutationsPerPixel.value_or(16.0));
   std::vector<size_t> lengths(size_t(session.size()));
-  for (int r = 0; r < session.size(); ++r) lengths[size_t(r)] = pool.messageLength(r);
+  auto updateLengths = [&] {
+    for (int r = 0; r < session.size(); ++r) lengths[size_t(r)] = pool.messageLength(r);
+  };
+  updateLengths();
 
   const double collectiveBefore = collectiveSeconds();
   const auto start = Clock::now();
@@ -50,9 +69,15 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   const bool tty = ::isatty(STDERR_FILENO);
   uint64_t rounds = 0;
   while (pool.active() && schedule.anotherRound(rounds, elapsed, lastRound)) {
+    const auto roundStart = Clock::now();
     pool.runRound(schedule.stepsInRound(rounds), films);
-    // The round's one collective: targets for the exchanges, large-step sums, elapsed times.
-    const double now = pool.finishRound(allgatherv(pool.roundMessage(since(start)), lengths), rounds);
+    // The round's one collective: targets for the exchanges, large-step sums, the ranks' times.
+    const double now =
+        pool.finishRound(allgatherv(pool.roundMessage(since(start), since(roundStart)), lengths), rounds);
+    if (!pool.plannedMoves().empty()) {
+      migrateChains(pool, session.rank());
+      updateLengths();
+    }
     ++rounds;
     lastRound = now - elapsed;
     elapsed = now;
@@ -82,6 +107,8 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   out.normalisers = pool.normalisers();
   out.tally = pool.tally();
   out.roundTrips = pool.roundTrips().total();
+  out.chainMoves = pool.chainMoves();
+  for (int r = 0; r < session.size(); ++r) out.chainsPerRank.push_back(pool.hostedCount(r));
   out.bootstrapSamples = uint64_t(rs.bootstrap);
   out.resolveDivisor = replicaResolveDivisor(out.stepsPerChain, rs.ladders, area);
   out.loopSeconds = elapsed;

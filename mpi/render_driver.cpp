@@ -112,6 +112,8 @@ nlohmann::json reltStats(const mpi::ReltOutcome& o) {
   j["bootstrap_samples"] = o.bootstrapSamples;
   j["loop_seconds"] = o.loopSeconds;
   j["round_collective_seconds_per_rank"] = o.roundCollectiveSeconds;
+  j["chain_moves"] = o.chainMoves;
+  j["chains_per_rank"] = o.chainsPerRank;
   nlohmann::json levels = nlohmann::json::array();
   for (int k = 0; k < o.levels; ++k) {
     const LevelCounters& c = o.perLevel[size_t(k)];

@@ -1,6 +1,7 @@
 #include "replica/replica_chain.h"
 
 #include <array>
+#include <stdexcept>
 
 #include "mcmc/metropolis.h"
 
@@ -38,6 +39,24 @@ ReplicaChain::ReplicaChain(uint64_t key, int level, const LevelFamily& family)
       counters_(size_t(family.levels())) {
   current_.q.assign(size_t(family.levels()), 0.0);
   proposal_.q.assign(size_t(family.levels()), 0.0);
+}
+
+ReplicaChain::ReplicaChain(const std::vector<uint64_t>& serialized, const LevelFamily& family,
+                           const LevelEvaluator& eval)
+    : ReplicaChain(0, 0, family) {
+  if (serialized.size() < 3) throw std::runtime_error("truncated replica-chain state");
+  rng_.restore(serialized[0], serialized[1]);
+  level_ = int(serialized[2]);
+  u_ = PrimarySampleVector::deserialize(std::vector<uint64_t>(serialized.begin() + 3, serialized.end()));
+  RecordingSource replay(0, state());  // the state holds every number the current path used
+  eval(replay, current_.path, current_.q.data());
+}
+
+std::vector<uint64_t> ReplicaChain::serialize() const {
+  std::vector<uint64_t> out = {rng_.state(), rng_.increment(), uint64_t(level_)};
+  const std::vector<uint64_t> u = u_.serialize();
+  out.insert(out.end(), u.begin(), u.end());
+  return out;
 }
 
 void ReplicaChain::setLevel(int level) {

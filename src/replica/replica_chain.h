@@ -51,6 +51,10 @@ class ReplicaChain {
  public:
   // `key` seeds the chain's mutations and decisions (replicaChainKey for a render's chains).
   ReplicaChain(uint64_t key, int level, const LevelFamily& family);
+  // A chain continued from serialize() on another rank: the same future steps, bit for bit (the
+  // current path is traced again from the state). Counters start at zero.
+  ReplicaChain(const std::vector<uint64_t>& serialized, const LevelFamily& family, const LevelEvaluator& eval);
+  std::vector<uint64_t> serialize() const;
 
   // Picks a bootstrap sample in proportion to its level's target (start-up bias elimination).
   size_t pickBootstrap(const Distribution1D& bootstrap) { return bootstrap.sample(rng_.uniform()); }

@@ -1,6 +1,7 @@
 #include "replica/replica_pool.h"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "mcmc/pssmlt.h"
 #include "replica/annealing.h"
@@ -35,6 +36,8 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
       family_(settings.family, LevelFamily::meanTarget(settings.family, bootstrap)),
       estimator_(family_, settings.beta),
       evaluator_(eval, family_),
+      windowSeconds_(size_t(ranks), 0.0),
+      departed_(size_t(family_.levels())),
       tally_(family_.levels()),
       trips_(settings.ladders * family_.levels(), family_.levels()) {
   const int m = levels();
@@ -108,10 +111,10 @@ void ReplicaPool::runRound(uint64_t steps, std::vector<Film>& films) {
 }
 
 size_t ReplicaPool::messageLength(int rank) const {
-  return active_ ? hostedByRank_[size_t(rank)].size() * size_t(levels()) + size_t(levels()) + 2 : 2;
+  return active_ ? hostedByRank_[size_t(rank)].size() * size_t(levels()) + size_t(levels()) + 3 : 3;
 }
 
-std::vector<double> ReplicaPool::roundMessage(double elapsed) {
+std::vector<double> ReplicaPool::roundMessage(double elapsed, double roundSeconds) {
   std::vector<double> msg;
   msg.reserve(messageLength(rank_));
   if (active_) {
@@ -119,6 +122,7 @@ std::vector<double> ReplicaPool::roundMessage(double elapsed) {
     msg.insert(msg.end(), pendingLarge_.sum.begin(), pendingLarge_.sum.end());
   }
   msg.push_back(double(pendingLarge_.count));
+  msg.push_back(roundSeconds);
   msg.push_back(elapsed);
   pendingLarge_ = LargeStepSums(levels());
   return msg;
@@ -127,7 +131,10 @@ std::vector<double> ReplicaPool::roundMessage(double elapsed) {
 double ReplicaPool::finishRound(const std::vector<std::vector<double>>& messages, uint64_t round) {
   const int m = levels();
   double elapsed = 0.0;
-  for (const std::vector<double>& msg : messages) elapsed = std::max(elapsed, msg.back());
+  for (size_t r = 0; r < messages.size(); ++r) {
+    elapsed = std::max(elapsed, messages[r].back());
+    windowSeconds_[r] += messages[r][messages[r].size() - 2];
+  }
   if (!active_) return elapsed;
 
   // Every chain's targets, by global id, and the large-step sums.
@@ -167,13 +174,58 @@ double ReplicaPool::finishRound(const std::vector<std::vector<double>>& messages
     for (int k = 0; k < m; ++k) b[size_t(k)] = (bootstrapSum_[size_t(k)] + largeSum_[size_t(k)]) / n;
     estimator_.setNormalisers(b);
   }
+
+  // Placement from the speeds measured since the last decision, once the slowest rank has stepped
+  // for a window long enough that timing noise is small (and a gain under 1 % is still noise).
+  const double window = *std::max_element(windowSeconds_.begin(), windowSeconds_.end());
+  if (settings_.balanceWindow > 0.0 && ranks_ > 1 && window >= settings_.balanceWindow) {
+    std::vector<int> counts(static_cast<size_t>(ranks_));
+    for (int r = 0; r < ranks_; ++r) counts[size_t(r)] = hostedCount(r);
+    moves_ = planMoves(hostedByRank_, balancedCounts(counts, windowSeconds_, 0.01));
+    windowSeconds_.assign(windowSeconds_.size(), 0.0);
+  }
   return elapsed;
+}
+
+std::vector<uint64_t> ReplicaPool::exportChain(int chain) {
+  const std::vector<int>& ids = hosted();
+  const size_t i = size_t(std::find(ids.begin(), ids.end(), chain) - ids.begin());
+  if (i == ids.size()) throw std::logic_error("exporting a chain this rank does not host");
+  for (int k = 0; k < levels(); ++k) departed_[size_t(k)].add(chains_[i].counters()[size_t(k)]);
+  return chains_[i].serialize();
+}
+
+void ReplicaPool::importChain(int chain, const std::vector<uint64_t>& state) {
+  imported_.emplace_back(chain, ReplicaChain(state, family_, evaluator_));
+}
+
+void ReplicaPool::commitMoves() {
+  std::vector<std::vector<int>> next = applyMoves(hostedByRank_, moves_);
+  std::vector<ReplicaChain> chains;
+  chains.reserve(next[size_t(rank_)].size());
+  for (int id : next[size_t(rank_)]) {
+    const std::vector<int>& ids = hosted();
+    const auto kept = std::find(ids.begin(), ids.end(), id);
+    if (kept != ids.end()) {
+      chains.push_back(std::move(chains_[size_t(kept - ids.begin())]));
+      continue;
+    }
+    const auto in = std::find_if(imported_.begin(), imported_.end(), [id](const auto& p) { return p.first == id; });
+    if (in == imported_.end()) throw std::logic_error("a chain moved to this rank was not imported");
+    chains.push_back(std::move(in->second));
+  }
+  chains_ = std::move(chains);
+  hostedByRank_ = std::move(next);
+  chainMoves_ += moves_.size();
+  moves_.clear();
+  imported_.clear();
 }
 
 std::vector<LevelCounters> ReplicaPool::hostedCounters() const {
   std::vector<LevelCounters> total(static_cast<size_t>(levels()));
   for (const ReplicaChain& chain : chains_)
     for (int k = 0; k < levels(); ++k) total[size_t(k)].add(chain.counters()[size_t(k)]);
+  for (int k = 0; k < levels(); ++k) total[size_t(k)].add(departed_[size_t(k)]);
   return total;
 }
 

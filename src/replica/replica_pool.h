@@ -14,6 +14,7 @@
 #include "replica/exchange.h"
 #include "replica/family.h"
 #include "replica/level_estimator.h"
+#include "replica/load_balance.h"
 #include "replica/replica_settings.h"
 #include "replica/replica_chain.h"
 
@@ -41,12 +42,23 @@ class ReplicaPool {
 
   // Steps every hosted chain `steps` times. films: one, or one per level (per-level layers).
   void runRound(uint64_t steps, std::vector<Film>& films);
-  // This rank's message for the round's collective, and the length any rank's message has.
-  std::vector<double> roundMessage(double elapsed);
+  // This rank's message for the round's collective (`roundSeconds`: time this rank spent in
+  // runRound), and the length any rank's message has (it changes when chains move).
+  std::vector<double> roundMessage(double elapsed, double roundSeconds);
   size_t messageLength(int rank) const;
   // Reads every rank's message (rank order): exchanges in every ladder, new level labels, new
-  // normalisers. Returns the largest elapsed time of the messages.
+  // normalisers, and after every balance window a new placement from the ranks' speeds
+  // (moves planned). Returns the largest elapsed time of the messages.
   double finishRound(const std::vector<std::vector<double>>& messages, uint64_t round);
+
+  // Chain migration after finishRound, the same plan on every rank: the sender exports each chain
+  // it gives, the receiver imports it, then every rank commits (the placement changes).
+  const std::vector<ChainMove>& plannedMoves() const { return moves_; }
+  std::vector<uint64_t> exportChain(int chain);
+  void importChain(int chain, const std::vector<uint64_t>& state);
+  void commitMoves();
+  uint64_t chainMoves() const { return chainMoves_; }  // chains moved so far
+  int hostedCount(int rank) const { return int(hostedByRank_[size_t(rank)].size()); }
 
   // Diagnostics. Exchange tallies and round trips are the same on every rank; level counters
   // cover the hosted chains (the MPI layer sums them).
@@ -68,6 +80,11 @@ class ReplicaPool {
   bool active_ = false;
   std::vector<std::vector<int>> hostedByRank_;  // global chain ids each rank hosts (placement)
   std::vector<ReplicaChain> chains_;    // this rank's, in hosted() order
+  std::vector<double> windowSeconds_;   // every rank's runRound time since the last placement decision
+  std::vector<ChainMove> moves_;        // planned, not yet committed
+  std::vector<std::pair<int, ReplicaChain>> imported_;
+  std::vector<LevelCounters> departed_;  // counters of chains this rank gave away
+  uint64_t chainMoves_ = 0;
   std::vector<int> levelOf_;            // every chain's level (kept identical on every rank)
   std::vector<double> bootstrapSum_;    // sum of q_k over the bootstrap
   double bootstrapCount_ = 0.0;

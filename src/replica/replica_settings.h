@@ -42,7 +42,8 @@ struct ReplicaSettings {
   int ladders = 32;
   ExchangeOptions exchange;
   int exchangeInterval = 16;  // steps per chain between exchanges
-  Placement placement = Placement::Spread;
+  Placement placement = Placement::Spread;  // where chains start
+  double balanceWindow = 0.25;  // seconds of stepping (slowest rank) between placement decisions (0: never)
   double beta = 1.0;          // MIS over levels: 1 balance, 2 power heuristic
   int bootstrap = 100000;
   InitKind init = InitKind::Resample;

@@ -41,7 +41,7 @@ Image renderInProcess(Scene scene, RenderSettings settings) {
     uint64_t rounds = 0;
     for (; pool.active() && schedule.anotherRound(rounds, 0.0, 0.0); ++rounds) {
       pool.runRound(schedule.stepsInRound(rounds), films);
-      pool.finishRound({pool.roundMessage(0.0)}, rounds);
+      pool.finishRound({pool.roundMessage(0.0, 0.0)}, rounds);
     }
     return Renderer::resolve(films[0], films[0].data(), replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
   }

@@ -53,10 +53,10 @@ TEST(ReplicaPool, TwoSimulatedRanksGiveTheLevelsAndImageOfOne) {
     std::vector<Film> f1(1, Film(16, 12)), fa(1, Film(16, 12)), fb(1, Film(16, 12));
     for (uint64_t r = 0; r < 12; ++r) {
       one.runRound(4, f1);
-      one.finishRound({one.roundMessage(0.0)}, r);
+      one.finishRound({one.roundMessage(0.0, 0.0)}, r);
       a.runRound(4, fa);
       b.runRound(4, fb);
-      const std::vector<std::vector<double>> messages = {a.roundMessage(1.0), b.roundMessage(2.0)};
+      const std::vector<std::vector<double>> messages = {a.roundMessage(1.0, 0.0), b.roundMessage(2.0, 0.0)};
       EXPECT_EQ(messages[0].size(), a.messageLength(0));
       EXPECT_EQ(messages[1].size(), a.messageLength(1));
       EXPECT_EQ(a.finishRound(messages, r), 2.0) << "the largest elapsed time";
@@ -82,10 +82,58 @@ TEST(ReplicaPool, TwoSimulatedRanksGiveTheLevelsAndImageOfOne) {
   }
 }
 
+TEST(ReplicaPool, ChainsMovedToAFasterRankContinueAsIfTheyHadStayed) {
+  // Rank 1 reports three times rank 0's round time: every 2 rounds (6 s >= the 5 s window) chains
+  // move to rank 0 (a state exported, imported, traced again). Levels, image and counters stay those of one rank.
+  Fixture fx;
+  fx.settings.ladders = 4;
+  fx.settings.balanceWindow = 5.0;
+  const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+  ReplicaPool one(*fx.eval, fx.settings, 5, lum, 0, 1);
+  ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
+  std::vector<Film> f1(1, Film(16, 12)), fa(1, Film(16, 12)), fb(1, Film(16, 12));
+  for (uint64_t r = 0; r < 10; ++r) {
+    one.runRound(4, f1);
+    one.finishRound({one.roundMessage(0.0, 1.0)}, r);
+    a.runRound(4, fa);
+    b.runRound(4, fb);
+    const std::vector<std::vector<double>> messages = {a.roundMessage(0.0, 1.0), b.roundMessage(0.0, 3.0)};
+    a.finishRound(messages, r);
+    b.finishRound(messages, r);
+    ASSERT_EQ(a.plannedMoves(), b.plannedMoves());
+    EXPECT_TRUE(one.plannedMoves().empty()) << "one rank never moves chains";
+    for (const ChainMove& m : a.plannedMoves()) {
+      ASSERT_EQ(m.from, 1);
+      a.importChain(m.chain, b.exportChain(m.chain));
+    }
+    a.commitMoves();
+    b.commitMoves();
+    for (int c = 0; c < one.chainCount(); ++c) ASSERT_EQ(one.levelOf(c), a.levelOf(c)) << "chain " << c;
+  }
+  EXPECT_GT(a.chainMoves(), 0u);
+  EXPECT_EQ(a.hostedCount(0) + a.hostedCount(1), one.chainCount());
+  EXPECT_GE(a.hostedCount(0), 2 * a.hostedCount(1)) << "rank 0 is three times as fast";
+  EXPECT_EQ(a.hostedCount(0), b.hostedCount(0));
+  const double s1 = sum(f1), s2 = sum(fa) + sum(fb);
+  EXPECT_NEAR(s1, s2, 1e-9 * s1);
+  uint64_t m1 = 0, m2 = 0, acc1 = 0, acc2 = 0;
+  auto count = [](const ReplicaPool& p, uint64_t& proposed, uint64_t& accepted) {
+    for (const LevelCounters& c : p.hostedCounters()) {
+      proposed += c.smallProposed + c.largeProposed;
+      accepted += c.smallAccepted + c.largeAccepted;
+    }
+  };
+  count(one, m1, acc1);
+  count(a, m2, acc2);
+  count(b, m2, acc2);
+  EXPECT_EQ(m1, m2);
+  EXPECT_EQ(acc1, acc2) << "moved chains take the same decisions";
+}
+
 TEST(ReplicaPool, ADarkSceneRunsNoChains) {
   Fixture fx;
   const std::vector<double> dark(size_t(fx.settings.bootstrap) * kPathClassCount, 0.0);
   ReplicaPool pool(*fx.eval, fx.settings, 5, dark, 0, 1);
   EXPECT_FALSE(pool.active());
-  EXPECT_EQ(pool.messageLength(0), 2u);
+  EXPECT_EQ(pool.messageLength(0), 3u);
 }
