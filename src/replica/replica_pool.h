@@ -85,6 +85,7 @@ class ReplicaPool {
   std::vector<std::pair<int, ReplicaChain>> imported_;
   std::vector<LevelCounters> departed_;  // counters of chains this rank gave away
   uint64_t chainMoves_ = 0;
+  uint64_t balanceDecisions_ = 0;
   std::vector<int> levelOf_;            // every chain's level (kept identical on every rank)
   std::vector<double> bootstrapSum_;    // sum of q_k over the bootstrap
   double bootstrapCount_ = 0.0;

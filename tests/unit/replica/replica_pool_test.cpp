@@ -83,8 +83,9 @@ TEST(ReplicaPool, TwoSimulatedRanksGiveTheLevelsAndImageOfOne) {
 }
 
 TEST(ReplicaPool, ChainsMovedToAFasterRankContinueAsIfTheyHadStayed) {
-  // Rank 1 reports three times rank 0's round time: every 2 rounds (6 s >= the 5 s window) chains
-  // move to rank 0 (a state exported, imported, traced again). Levels, image and counters stay those of one rank.
+  // Rank 1 reports three times rank 0's round time: chains move to rank 0 (a state exported,
+  // imported, traced again) after each of the first rounds (the first windows are short), then
+  // every 2 rounds (6 s >= the 5 s window). Levels, image and counters stay those of one rank.
   Fixture fx;
   fx.settings.ladders = 4;
   fx.settings.balanceWindow = 5.0;
