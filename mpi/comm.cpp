@@ -126,3 +126,32 @@ std::vector<std::vector<uint64_t>> transfer(const std::vector<Payload>& sends, c
   return received;
 }
 }  // namespace relt::mpi
+
+namespace relt::mpi {
+PendingAllgatherv::PendingAllgatherv(std::vector<double> mine, const std::vector<size_t>& lengths)
+    : mine_(std::move(mine)), counts_(lengths.size()), offsets_(lengths.size()) {
+  int total = 0;
+  for (size_t r = 0; r < lengths.size(); ++r) {
+    counts_[r] = static_cast<int>(lengths[r]);
+    offsets_[r] = total;
+    total += counts_[r];
+  }
+  all_.resize(static_cast<size_t>(total));
+  timed([&] {
+    MPI_Iallgatherv(mine_.data(), static_cast<int>(mine_.size()), MPI_DOUBLE, all_.data(), counts_.data(),
+                    offsets_.data(), MPI_DOUBLE, MPI_COMM_WORLD, &request_);
+  });
+}
+
+PendingAllgatherv::~PendingAllgatherv() {
+  if (request_ != MPI_REQUEST_NULL) MPI_Wait(&request_, MPI_STATUS_IGNORE);
+}
+
+std::vector<std::vector<double>> PendingAllgatherv::wait() {
+  timed([&] { MPI_Wait(&request_, MPI_STATUS_IGNORE); });
+  std::vector<std::vector<double>> out(counts_.size());
+  for (size_t r = 0; r < counts_.size(); ++r)
+    out[r].assign(all_.begin() + offsets_[r], all_.begin() + offsets_[r] + counts_[r]);
+  return out;
+}
+}  // namespace relt::mpi

@@ -52,3 +52,22 @@ struct Payload {
 };
 std::vector<std::vector<uint64_t>> transfer(const std::vector<Payload>& sends, const std::vector<int>& receiveFrom);
 }  // namespace relt::mpi
+
+namespace relt::mpi {
+// A nonblocking MPI_Iallgatherv: started by the constructor, completed by wait() (the time in wait
+// counts as collective time). Not movable: MPI holds the buffers until then.
+class PendingAllgatherv {
+ public:
+  PendingAllgatherv(std::vector<double> mine, const std::vector<size_t>& lengths);
+  PendingAllgatherv(const PendingAllgatherv&) = delete;
+  PendingAllgatherv& operator=(const PendingAllgatherv&) = delete;
+  ~PendingAllgatherv();
+  // Every rank's buffer, in rank order.
+  std::vector<std::vector<double>> wait();
+
+ private:
+  std::vector<double> mine_, all_;
+  std::vector<int> counts_, offsets_;
+  MPI_Request request_ = MPI_REQUEST_NULL;
+};
+}  // namespace relt::mpi

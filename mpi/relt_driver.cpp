@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <memory>
 
 #include "mcmc/round_schedule.h"
+#include "replica/round_loop.h"
 #include "replica/replica_schedule.h"
 #include "render/schedule.h"
 
@@ -25,21 +27,39 @@ std::vector<double> reducedSum(const std::vector<Film>& films) {
   return sums;
 }
 
-// Carries out the pool's planned chain moves: states travel point to point, then every rank commits.
-void migrateChains(ReplicaPool& pool, int rank) {
-  std::vector<Payload> sends;
-  std::vector<int> from, chains;
-  for (const ChainMove& m : pool.plannedMoves()) {
-    if (m.from == rank) sends.push_back({m.to, pool.exportChain(m.chain)});
-    if (m.to == rank) {
-      from.push_back(m.from);
-      chains.push_back(m.chain);
-    }
+// The round loop's transport over MPI: one nonblocking allgatherv per group and round; chain
+// states point to point.
+class MpiTransport final : public RoundTransport {
+ public:
+  explicit MpiTransport(int rank) : rank_(rank) {}
+  void post(int group, std::vector<double> mine, const std::vector<size_t>& lengths) override {
+    if (pending_.size() <= size_t(group)) pending_.resize(size_t(group) + 1);
+    pending_[size_t(group)] = std::make_unique<PendingAllgatherv>(std::move(mine), lengths);
   }
-  const std::vector<std::vector<uint64_t>> states = transfer(sends, from);
-  for (size_t i = 0; i < states.size(); ++i) pool.importChain(chains[i], states[i]);
-  pool.commitMoves();
-}
+  std::vector<std::vector<double>> wait(int group) override {
+    std::vector<std::vector<double>> out = pending_[size_t(group)]->wait();
+    pending_[size_t(group)].reset();
+    return out;
+  }
+  void migrate(ReplicaPool& pool) override {
+    std::vector<Payload> sends;
+    std::vector<int> from, chains;
+    for (const ChainMove& m : pool.plannedMoves()) {
+      if (m.from == rank_) sends.push_back({m.to, pool.exportChain(m.chain)});
+      if (m.to == rank_) {
+        from.push_back(m.from);
+        chains.push_back(m.chain);
+      }
+    }
+    const std::vector<std::vector<uint64_t>> states = transfer(sends, from);
+    for (size_t i = 0; i < states.size(); ++i) pool.importChain(chains[i], states[i]);
+    pool.commitMoves();
+  }
+
+ private:
+  int rank_;
+  std::vector<std::unique_ptr<PendingAllgatherv>> pending_;
+};
 
 }  // namespace
 
@@ -57,31 +77,13 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   const double area = double(settings.width) * settings.height;
   const ReplicaSchedule schedule(area, pool.chainCount(), rs.exchangeInterval, settings.seconds,
                                  settings.mutationsPerPixel.value_or(16.0));
-  std::vector<size_t> lengths(size_t(session.size()));
-  auto updateLengths = [&] {
-    for (int r = 0; r < session.size(); ++r) lengths[size_t(r)] = pool.messageLength(r);
-  };
-  updateLengths();
-
   const double collectiveBefore = collectiveSeconds();
   const auto start = Clock::now();
-  double elapsed = 0.0, lastRound = 0.0, lastSnapshot = 0.0, lastPrint = 0.0;
+  double lastSnapshot = 0.0, lastPrint = 0.0;
   const bool tty = ::isatty(STDERR_FILENO);
-  uint64_t rounds = 0;
-  while (pool.active() && schedule.anotherRound(rounds, elapsed, lastRound)) {
-    const auto roundStart = Clock::now();
-    pool.runRound(schedule.stepsInRound(rounds), films);
-    // The round's one collective: targets for the exchanges, large-step sums, the ranks' times.
-    const double now =
-        pool.finishRound(allgatherv(pool.roundMessage(since(start), since(roundStart)), lengths), rounds);
-    if (!pool.plannedMoves().empty()) {
-      migrateChains(pool, session.rank());
-      updateLengths();
-    }
-    ++rounds;
-    lastRound = now - elapsed;
-    elapsed = now;
-    const bool more = schedule.anotherRound(rounds, elapsed, lastRound);
+  RoundLoopHooks hooks;
+  hooks.elapsed = [&] { return since(start); };
+  hooks.roundDone = [&](uint64_t rounds, double elapsed, bool more) {
     if (session.isRoot() && elapsed - lastPrint >= 1.0) {
       lastPrint = elapsed;
       const double rate = double(schedule.stepsAfter(rounds)) * pool.chainCount() / std::max(elapsed, 1e-9);
@@ -94,7 +96,11 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
       if (session.isRoot())
         snapshot(sums, replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
     }
-  }
+  };
+  MpiTransport transport(session.rank());
+  const RoundLoopResult loop = runRoundLoop(pool, schedule, transport, films, hooks);
+  const uint64_t rounds = loop.rounds;
+  const double elapsed = loop.elapsed;
   if (session.isRoot() && tty && lastPrint > 0.0) std::fprintf(stderr, "\n");
   const double roundCollective = collectiveSeconds() - collectiveBefore;
 

@@ -36,7 +36,6 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
       family_(settings.family, LevelFamily::meanTarget(settings.family, bootstrap)),
       estimator_(family_, settings.beta),
       evaluator_(eval, family_),
-      windowSeconds_(size_t(ranks), 0.0),
       departed_(size_t(family_.levels())),
       tally_(family_.levels()),
       trips_(settings.ladders * family_.levels(), family_.levels()) {
@@ -56,7 +55,11 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   }
   bootstrapCount_ = double(samples);
   largeSum_.assign(size_t(m), 0.0);
-  pendingLarge_ = LargeStepSums(m);
+  pendingLarge_.assign(size_t(std::min(2, std::max(1, settings.ladders))), LargeStepSums(m));  // defines groups()
+  messageEpoch_.assign(size_t(groups()), 0);
+  windowSeconds_.assign(size_t(groups()), std::vector<double>(size_t(ranks), 0.0));
+  balanceDecisions_.assign(size_t(groups()), 0);
+  epochOf_.assign(size_t(chainCount()), 0);
   std::vector<double> b(static_cast<size_t>(m));
   for (int k = 0; k < m; ++k) b[size_t(k)] = samples ? bootstrapSum_[size_t(k)] / double(samples) : 0.0;
   estimator_.setNormalisers(b);
@@ -66,6 +69,9 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
     levelOf_[size_t(c)] = c % m;
     trips_.visit(c, c % m);
   }
+  hostedByRank_.resize(size_t(ranks_));
+  for (int c = 0; c < chainCount(); ++c)
+    hostedByRank_[size_t(chainRank(c, m, ranks_, settings_.placement))].push_back(c);
   // Nothing visible (I = 0 everywhere the bootstrap looked): no chain runs, the image stays black.
   active_ = LevelFamily::meanTarget(settings.family, bootstrap) > 0.0;
   if (!active_) return;
@@ -76,9 +82,6 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   }
   std::vector<std::vector<StreamValues>> annealed;
   if (settings_.init == InitKind::Annealing) annealed = annealedStarts(evaluator_, family_, q, seed, settings_.annealing);
-  hostedByRank_.resize(size_t(ranks_));
-  for (int c = 0; c < chainCount(); ++c)
-    hostedByRank_[size_t(chainRank(c, m, ranks_, settings_.placement))].push_back(c);
   chains_.reserve(hosted().size());
   for (int c : hosted()) {
     const int level = c % m;
@@ -92,65 +95,88 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   }
 }
 
-void ReplicaPool::runRound(uint64_t steps, std::vector<Film>& films) {
-  // Regularisation shrinks with the steps taken so far. When it moves, the targets are new: states
-  // are evaluated again, and the normalisers start again from this round's large steps (sums of
-  // the old targets would bias them; every rank does the same).
-  if (family_.setRegularisationStep(stepsPerChain_)) {
-    for (ReplicaChain& chain : chains_) chain.refresh(evaluator_);
-    bootstrapSum_.assign(bootstrapSum_.size(), 0.0);
-    bootstrapCount_ = 0.0;
-    largeSum_.assign(largeSum_.size(), 0.0);
-    largeCount_ = 0.0;
+void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films) {
+  // Regularisation shrinks with the steps taken so far; it is checked when group 0 starts a round,
+  // where every group has taken the same steps. When it moves the targets are new: states are
+  // evaluated again (a group whose exchange is still pending keeps its old targets for that
+  // exchange and is evaluated again when it next runs), and the normalisers start again from large
+  // steps taken under the new targets (sums of the old ones would bias them).
+  if (group == 0) {
+    if (family_.setRegularisationStep(stepsPerChain_)) {
+      ++epoch_;
+      bootstrapSum_.assign(bootstrapSum_.size(), 0.0);
+      bootstrapCount_ = 0.0;
+      largeSum_.assign(largeSum_.size(), 0.0);
+      largeCount_ = 0.0;
+    }
+    stepsPerChain_ += steps;
   }
-  stepsPerChain_ += steps;
-  for (ReplicaChain& chain : chains_) {
+  for (size_t i = 0; i < chains_.size(); ++i) {
+    const int c = hosted()[i];
+    if (groupOf(c) != group) continue;
+    ReplicaChain& chain = chains_[i];
+    if (epochOf_[size_t(c)] != epoch_) {
+      chain.refresh(evaluator_);
+      epochOf_[size_t(c)] = epoch_;
+    }
     Film& film = films.size() > 1 ? films[size_t(chain.level())] : films[0];
-    chain.run(steps, evaluator_, estimator_, film, pendingLarge_);
+    chain.run(steps, evaluator_, estimator_, film, pendingLarge_[size_t(group)]);
   }
 }
 
-size_t ReplicaPool::messageLength(int rank) const {
-  return active_ ? hostedByRank_[size_t(rank)].size() * size_t(levels()) + size_t(levels()) + 3 : 3;
+size_t ReplicaPool::messageLength(int group, int rank) const {
+  if (!active_) return 3;
+  size_t chains = 0;
+  for (int c : hostedByRank_[size_t(rank)]) chains += groupOf(c) == group;
+  return chains * size_t(levels()) + size_t(levels()) + 3;
 }
 
-std::vector<double> ReplicaPool::roundMessage(double elapsed, double roundSeconds) {
+std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double roundSeconds) {
   std::vector<double> msg;
-  msg.reserve(messageLength(rank_));
+  msg.reserve(messageLength(group, rank_));
+  LargeStepSums& large = pendingLarge_[size_t(group)];
   if (active_) {
-    for (const ReplicaChain& chain : chains_) msg.insert(msg.end(), chain.targets(), chain.targets() + levels());
-    msg.insert(msg.end(), pendingLarge_.sum.begin(), pendingLarge_.sum.end());
+    for (size_t i = 0; i < chains_.size(); ++i)
+      if (groupOf(hosted()[i]) == group) msg.insert(msg.end(), chains_[i].targets(), chains_[i].targets() + levels());
+    msg.insert(msg.end(), large.sum.begin(), large.sum.end());
   }
-  msg.push_back(double(pendingLarge_.count));
+  msg.push_back(double(large.count));
   msg.push_back(roundSeconds);
   msg.push_back(elapsed);
-  pendingLarge_ = LargeStepSums(levels());
+  large = LargeStepSums(levels());
+  messageEpoch_[size_t(group)] = epoch_;
   return msg;
 }
 
-double ReplicaPool::finishRound(const std::vector<std::vector<double>>& messages, uint64_t round) {
+double ReplicaPool::finishRound(int group, const std::vector<std::vector<double>>& messages, uint64_t round) {
   const int m = levels();
+  std::vector<double>& window = windowSeconds_[size_t(group)];
   double elapsed = 0.0;
   for (size_t r = 0; r < messages.size(); ++r) {
     elapsed = std::max(elapsed, messages[r].back());
-    windowSeconds_[r] += messages[r][messages[r].size() - 2];
+    window[r] += messages[r][messages[r].size() - 2];
   }
   if (!active_) return elapsed;
 
-  // Every chain's targets, by global id, and the large-step sums.
+  // The group's chains' targets, by global id, and the large-step sums (dropped when the
+  // regularisation moved after they were taken).
+  const bool current = messageEpoch_[size_t(group)] == epoch_;
   std::vector<const double*> targetsOf(size_t(chainCount()), nullptr);
   for (int r = 0; r < int(messages.size()); ++r) {
-    const std::vector<double>& msg = messages[size_t(r)];
-    const std::vector<int>& ids = hostedByRank_[size_t(r)];
-    for (size_t i = 0; i < ids.size(); ++i) targetsOf[size_t(ids[i])] = msg.data() + i * size_t(m);
-    const double* large = msg.data() + ids.size() * size_t(m);
-    for (int k = 0; k < m; ++k) largeSum_[size_t(k)] += large[k];
-    largeCount_ += large[m];
+    const double* msg = messages[size_t(r)].data();
+    for (int c : hostedByRank_[size_t(r)]) {
+      if (groupOf(c) != group) continue;
+      targetsOf[size_t(c)] = msg;
+      msg += m;
+    }
+    if (!current) continue;
+    for (int k = 0; k < m; ++k) largeSum_[size_t(k)] += msg[k];
+    largeCount_ += msg[m];
   }
 
-  // Each ladder: Q(i, j) = q_i(state held by level j), one exchange, new labels.
+  // Each of the group's ladders: Q(i, j) = q_i(state held by level j), one exchange, new labels.
   std::vector<int> holder(static_cast<size_t>(m));
-  for (int ladder = 0; ladder < settings_.ladders; ++ladder) {
+  for (int ladder = group; ladder < settings_.ladders; ladder += groups()) {
     const int first = ladder * m;
     for (int c = first; c < first + m; ++c) holder[size_t(levelOf_[size_t(c)])] = c;
     TargetMatrix q(m);
@@ -166,8 +192,8 @@ double ReplicaPool::finishRound(const std::vector<std::vector<double>>& messages
   }
   for (size_t i = 0; i < chains_.size(); ++i) chains_[i].setLevel(levelOf_[size_t(hosted()[i])]);
 
-  // Normalisers from the bootstrap and every large step so far, frozen until the next round (no
-  // samples since the regularisation moved: the previous ones stay).
+  // Normalisers from the bootstrap and every large step gathered so far, frozen until the next
+  // finished round (no samples since the regularisation moved: the previous ones stay).
   const double n = bootstrapCount_ + largeCount_;
   if (n > 0.0) {
     std::vector<double> b(static_cast<size_t>(m));
@@ -175,17 +201,23 @@ double ReplicaPool::finishRound(const std::vector<std::vector<double>>& messages
     estimator_.setNormalisers(b);
   }
 
-  // Placement from the speeds measured since the last decision, once the slowest rank has stepped
-  // for a window long enough that timing noise is small (and a gain under 1 % is still noise). The
-  // first windows are 1/8, 1/4 and 1/2 of it: an uneven start costs less.
-  const double window = *std::max_element(windowSeconds_.begin(), windowSeconds_.end());
-  const double needed = settings_.balanceWindow / double(1 << std::max(0, 3 - int(balanceDecisions_)));
-  if (settings_.balanceWindow > 0.0 && ranks_ > 1 && window >= needed) {
-    ++balanceDecisions_;
+  // The group's placement from the speeds measured since its last decision, once the slowest rank
+  // has stepped it for a window long enough that timing noise is small (and a gain under 1 % is
+  // still noise). The first windows are 1/8, 1/4 and 1/2 of it: an uneven start costs less.
+  const double slowest = *std::max_element(window.begin(), window.end());
+  uint64_t& decisions = balanceDecisions_[size_t(group)];
+  const double needed = settings_.balanceWindow / double(1 << std::max(0, 3 - int(decisions)));
+  if (settings_.balanceWindow > 0.0 && ranks_ > 1 && slowest * groups() >= needed) {
+    ++decisions;
+    std::vector<std::vector<int>> groupHosted(static_cast<size_t>(ranks_));
     std::vector<int> counts(static_cast<size_t>(ranks_));
-    for (int r = 0; r < ranks_; ++r) counts[size_t(r)] = hostedCount(r);
-    moves_ = planMoves(hostedByRank_, balancedCounts(counts, windowSeconds_, 0.01));
-    windowSeconds_.assign(windowSeconds_.size(), 0.0);
+    for (int r = 0; r < ranks_; ++r) {
+      for (int c : hostedByRank_[size_t(r)])
+        if (groupOf(c) == group) groupHosted[size_t(r)].push_back(c);
+      counts[size_t(r)] = int(groupHosted[size_t(r)].size());
+    }
+    moves_ = planMoves(groupHosted, balancedCounts(counts, window, 0.01));
+    window.assign(window.size(), 0.0);
   }
   return elapsed;
 }
@@ -200,6 +232,7 @@ std::vector<uint64_t> ReplicaPool::exportChain(int chain) {
 
 void ReplicaPool::importChain(int chain, const std::vector<uint64_t>& state) {
   imported_.emplace_back(chain, ReplicaChain(state, family_, evaluator_));
+  epochOf_[size_t(chain)] = epoch_;  // traced again under today's targets
 }
 
 void ReplicaPool::commitMoves() {

@@ -1,10 +1,12 @@
 #pragma once
 // Replica exchange light transport (`relt`): C = L ladders x M levels chains, chain c in ladder
-// c / M starting at level c mod M. A rank hosts some chains (placement), steps them for a round,
-// and contributes one message to the round's one collective: its chains' targets under every
-// level, its large-step sums and its elapsed time. From all messages every rank runs the same
-// exchange per ladder (a per-ladder stream keyed by seed, ladder and round) and updates every
-// chain's level label; states never move. Rank-agnostic: the image depends on (seed, L, M, steps).
+// c / M starting at level c mod M. The ladders form two groups (even and odd ladders; one group if
+// L = 1) whose rounds the render loop staggers (RoundLoop). A rank hosts some chains (placement),
+// steps a group's chains for a round, and contributes one message to that group's collective: the
+// chains' targets under every level, its large-step sums, its stepping time and its elapsed time.
+// From all messages every rank runs the same exchange per ladder of the group (a per-ladder stream
+// keyed by seed, ladder and round) and updates the level labels; states stay where they are
+// except when load balancing moves chains. Rank-agnostic: the image depends on (seed, L, M, steps).
 #include <cstdint>
 #include <optional>
 #include <string_view>
@@ -37,19 +39,22 @@ class ReplicaPool {
   const LevelEstimator& estimator() const { return estimator_; }
   int levels() const { return family_.levels(); }
   int chainCount() const { return settings_.ladders * levels(); }
+  int groups() const { return int(pendingLarge_.size()); }
+  int rankCount() const { return ranks_; }
+  int groupOf(int chain) const { return (chain / levels()) % groups(); }
   // False when no bootstrap sample saw light: the image is black and no chain runs.
   bool active() const { return active_; }
 
-  // Steps every hosted chain `steps` times. films: one, or one per level (per-level layers).
-  void runRound(uint64_t steps, std::vector<Film>& films);
-  // This rank's message for the round's collective (`roundSeconds`: time this rank spent in
-  // runRound), and the length any rank's message has (it changes when chains move).
-  std::vector<double> roundMessage(double elapsed, double roundSeconds);
-  size_t messageLength(int rank) const;
-  // Reads every rank's message (rank order): exchanges in every ladder, new level labels, new
-  // normalisers, and after every balance window a new placement from the ranks' speeds
-  // (moves planned). Returns the largest elapsed time of the messages.
-  double finishRound(const std::vector<std::vector<double>>& messages, uint64_t round);
+  // Steps every hosted chain of `group` `steps` times. films: one, or one per level (per-level layers).
+  void runRound(int group, uint64_t steps, std::vector<Film>& films);
+  // This rank's message for the group's collective (`roundSeconds`: time this rank spent in
+  // runRound), and the length rank `rank`'s message has (it changes when chains move).
+  std::vector<double> roundMessage(int group, double elapsed, double roundSeconds);
+  size_t messageLength(int group, int rank) const;
+  // Reads every rank's message (rank order) of the group's round `round`: exchanges in its
+  // ladders, new level labels, new normalisers, and after every balance window a new placement of
+  // the group's chains from the ranks' speeds (moves planned). Returns the largest elapsed time.
+  double finishRound(int group, const std::vector<std::vector<double>>& messages, uint64_t round);
 
   // Chain migration after finishRound, the same plan on every rank: the sender exports each chain
   // it gives, the receiver imports it, then every rank commits (the placement changes).
@@ -80,18 +85,21 @@ class ReplicaPool {
   bool active_ = false;
   std::vector<std::vector<int>> hostedByRank_;  // global chain ids each rank hosts (placement)
   std::vector<ReplicaChain> chains_;    // this rank's, in hosted() order
-  std::vector<double> windowSeconds_;   // every rank's runRound time since the last placement decision
+  std::vector<std::vector<double>> windowSeconds_;  // per group, every rank's stepping time since its last placement decision
   std::vector<ChainMove> moves_;        // planned, not yet committed
   std::vector<std::pair<int, ReplicaChain>> imported_;
   std::vector<LevelCounters> departed_;  // counters of chains this rank gave away
   uint64_t chainMoves_ = 0;
-  uint64_t balanceDecisions_ = 0;
+  std::vector<uint64_t> balanceDecisions_;  // per group
+  uint64_t epoch_ = 0;                  // regularisation moves so far
+  std::vector<uint64_t> epochOf_;       // every chain's: the epoch its state was last evaluated in
+  std::vector<uint64_t> messageEpoch_;  // per group: the epoch of its last message
   std::vector<int> levelOf_;            // every chain's level (kept identical on every rank)
   std::vector<double> bootstrapSum_;    // sum of q_k over the bootstrap
   double bootstrapCount_ = 0.0;
   std::vector<double> largeSum_;        // all ranks' large-step sums so far
   double largeCount_ = 0.0;
-  LargeStepSums pendingLarge_;          // this rank's, since its last message
+  std::vector<LargeStepSums> pendingLarge_;  // per group: this rank's, since the group's last message
   uint64_t stepsPerChain_ = 0;          // steps every chain has taken (regularisation schedule)
   ExchangeTally tally_;
   RoundTrips trips_;

@@ -7,6 +7,7 @@
 #include "mcmc/pssmlt.h"
 #include "render/renderer.h"
 #include "replica/replica_pool.h"
+#include "replica/round_loop.h"
 #include "replica/replica_schedule.h"
 #include "scene/gltf_loader.h"
 #include "test_support.h"
@@ -30,7 +31,7 @@ Image renderInProcess(Scene scene, RenderSettings settings) {
   const RenderSettings& s = renderer.settings();
   Film film(s.width, s.height);
   if (s.integrator == Integrator::Relt) {
-    // One process hosts every chain; each round's message is the only one (as mpi/relt_driver).
+    // One process hosts every chain and runs the round loop of mpi/relt_driver with a local transport.
     PssEvaluator eval(renderer.context(), s.width, s.height);
     const ReplicaSettings rs = effectiveReplicaSettings(s);
     ReplicaPool pool(eval, rs, s.seed, bootstrapFeatures(eval, rs.family, s.seed, rs.bootstrap, 0, 1), 0, 1);
@@ -38,11 +39,10 @@ Image renderInProcess(Scene scene, RenderSettings settings) {
     const double area = double(s.width) * s.height;
     const ReplicaSchedule schedule(area, pool.chainCount(), rs.exchangeInterval, std::nullopt,
                                    s.mutationsPerPixel.value_or(16.0));
-    uint64_t rounds = 0;
-    for (; pool.active() && schedule.anotherRound(rounds, 0.0, 0.0); ++rounds) {
-      pool.runRound(schedule.stepsInRound(rounds), films);
-      pool.finishRound({pool.roundMessage(0.0, 0.0)}, rounds);
-    }
+    LocalTransport transport;
+    RoundLoopHooks hooks;
+    hooks.elapsed = [] { return 0.0; };  // no timings: the placement of one rank never changes anyway
+    const uint64_t rounds = runRoundLoop(pool, schedule, transport, films, hooks).rounds;
     return Renderer::resolve(films[0], films[0].data(), replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
   }
   if (isMarkovChain(s.integrator)) {

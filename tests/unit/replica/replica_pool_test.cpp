@@ -51,16 +51,19 @@ TEST(ReplicaPool, TwoSimulatedRanksGiveTheLevelsAndImageOfOne) {
     ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
     ASSERT_TRUE(one.active());
     std::vector<Film> f1(1, Film(16, 12)), fa(1, Film(16, 12)), fb(1, Film(16, 12));
+    ASSERT_EQ(one.groups(), 2) << "odd and even ladders";
     for (uint64_t r = 0; r < 12; ++r) {
-      one.runRound(4, f1);
-      one.finishRound({one.roundMessage(0.0, 0.0)}, r);
-      a.runRound(4, fa);
-      b.runRound(4, fb);
-      const std::vector<std::vector<double>> messages = {a.roundMessage(1.0, 0.0), b.roundMessage(2.0, 0.0)};
-      EXPECT_EQ(messages[0].size(), a.messageLength(0));
-      EXPECT_EQ(messages[1].size(), a.messageLength(1));
-      EXPECT_EQ(a.finishRound(messages, r), 2.0) << "the largest elapsed time";
-      b.finishRound(messages, r);
+      for (int g = 0; g < 2; ++g) {
+        one.runRound(g, 4, f1);
+        one.finishRound(g, {one.roundMessage(g, 0.0, 0.0)}, r);
+        a.runRound(g, 4, fa);
+        b.runRound(g, 4, fb);
+        const std::vector<std::vector<double>> messages = {a.roundMessage(g, 1.0, 0.0), b.roundMessage(g, 2.0, 0.0)};
+        EXPECT_EQ(messages[0].size(), a.messageLength(g, 0));
+        EXPECT_EQ(messages[1].size(), a.messageLength(g, 1));
+        EXPECT_EQ(a.finishRound(g, messages, r), 2.0) << "the largest elapsed time";
+        b.finishRound(g, messages, r);
+      }
       for (int c = 0; c < one.chainCount(); ++c) {
         ASSERT_EQ(one.levelOf(c), a.levelOf(c)) << "chain " << c << " round " << r;
         ASSERT_EQ(one.levelOf(c), b.levelOf(c));
@@ -83,32 +86,35 @@ TEST(ReplicaPool, TwoSimulatedRanksGiveTheLevelsAndImageOfOne) {
 }
 
 TEST(ReplicaPool, ChainsMovedToAFasterRankContinueAsIfTheyHadStayed) {
-  // Rank 1 reports three times rank 0's round time: chains move to rank 0 (a state exported,
-  // imported, traced again) after each of the first rounds (the first windows are short), then
-  // every 2 rounds (6 s >= the 5 s window). Levels, image and counters stay those of one rank.
+  // Rank 1 reports three times rank 0's stepping time: chains move to rank 0 (a state exported,
+  // imported, traced again), each group's after each of its first rounds (the first windows are
+  // short), then every 2 rounds (2 groups x 2 x 3 s >= the 10 s window). Levels, image and counters stay those of one rank.
   Fixture fx;
   fx.settings.ladders = 4;
-  fx.settings.balanceWindow = 5.0;
+  fx.settings.balanceWindow = 10.0;
   const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
   ReplicaPool one(*fx.eval, fx.settings, 5, lum, 0, 1);
   ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
   std::vector<Film> f1(1, Film(16, 12)), fa(1, Film(16, 12)), fb(1, Film(16, 12));
   for (uint64_t r = 0; r < 10; ++r) {
-    one.runRound(4, f1);
-    one.finishRound({one.roundMessage(0.0, 1.0)}, r);
-    a.runRound(4, fa);
-    b.runRound(4, fb);
-    const std::vector<std::vector<double>> messages = {a.roundMessage(0.0, 1.0), b.roundMessage(0.0, 3.0)};
-    a.finishRound(messages, r);
-    b.finishRound(messages, r);
-    ASSERT_EQ(a.plannedMoves(), b.plannedMoves());
-    EXPECT_TRUE(one.plannedMoves().empty()) << "one rank never moves chains";
-    for (const ChainMove& m : a.plannedMoves()) {
-      ASSERT_EQ(m.from, 1);
-      a.importChain(m.chain, b.exportChain(m.chain));
+    for (int g = 0; g < one.groups(); ++g) {
+      one.runRound(g, 4, f1);
+      one.finishRound(g, {one.roundMessage(g, 0.0, 1.0)}, r);
+      a.runRound(g, 4, fa);
+      b.runRound(g, 4, fb);
+      const std::vector<std::vector<double>> messages = {a.roundMessage(g, 0.0, 1.0), b.roundMessage(g, 0.0, 3.0)};
+      a.finishRound(g, messages, r);
+      b.finishRound(g, messages, r);
+      ASSERT_EQ(a.plannedMoves(), b.plannedMoves());
+      EXPECT_TRUE(one.plannedMoves().empty()) << "one rank never moves chains";
+      for (const ChainMove& m : a.plannedMoves()) {
+        ASSERT_EQ(m.from, 1);
+        ASSERT_EQ(a.groupOf(m.chain), g) << "only the finished group's chains move";
+        a.importChain(m.chain, b.exportChain(m.chain));
+      }
+      a.commitMoves();
+      b.commitMoves();
     }
-    a.commitMoves();
-    b.commitMoves();
     for (int c = 0; c < one.chainCount(); ++c) ASSERT_EQ(one.levelOf(c), a.levelOf(c)) << "chain " << c;
   }
   EXPECT_GT(a.chainMoves(), 0u);
@@ -136,5 +142,5 @@ TEST(ReplicaPool, ADarkSceneRunsNoChains) {
   const std::vector<double> dark(size_t(fx.settings.bootstrap) * kPathClassCount, 0.0);
   ReplicaPool pool(*fx.eval, fx.settings, 5, dark, 0, 1);
   EXPECT_FALSE(pool.active());
-  EXPECT_EQ(pool.messageLength(0), 3u);
+  EXPECT_EQ(pool.messageLength(0, 0), 3u);
 }

@@ -1,0 +1,76 @@
+#include "replica/round_loop.h"
+
+#include <chrono>
+
+namespace relt {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Stepper {
+  ReplicaPool& pool;
+  const ReplicaSchedule& schedule;
+  RoundTransport& transport;
+  std::vector<Film>& films;
+  const RoundLoopHooks& hooks;
+
+  std::vector<size_t> lengths(int group) const {
+    std::vector<size_t> out;
+    for (int r = 0; r < pool.rankCount(); ++r) out.push_back(pool.messageLength(group, r));
+    return out;
+  }
+
+  // Steps a group's chains for round `round` and starts its collective.
+  void stepAndPost(int group, uint64_t round) {
+    const auto t0 = Clock::now();
+    pool.runRound(group, schedule.stepsInRound(round), films);
+    const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    transport.post(group, pool.roundMessage(group, hooks.elapsed(), seconds), lengths(group));
+  }
+  // Completes a group's collective for round `round`: exchanges, normalisers, chain moves.
+  double finish(int group, uint64_t round) {
+    const double elapsed = pool.finishRound(group, transport.wait(group), round);
+    if (!pool.plannedMoves().empty()) transport.migrate(pool);
+    return elapsed;
+  }
+};
+
+}  // namespace
+
+RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule, RoundTransport& transport,
+                             std::vector<Film>& films, const RoundLoopHooks& hooks) {
+  RoundLoopResult out;
+  if (!pool.active() || !schedule.anotherRound(0, 0.0, 0.0)) return out;
+  Stepper s{pool, schedule, transport, films, hooks};
+  const int groups = pool.groups();
+  for (int g = 0; g < groups; ++g) s.stepAndPost(g, 0);
+  double lastRound = 0.0;
+  for (;;) {
+    for (int g = 0; g < groups; ++g) {
+      // Group 0 finishes the round it just stepped; the others the round before (still pending).
+      const double now = s.finish(g, g == 0 ? out.rounds : out.rounds - 1);
+      if (g == 0) {
+        // Every group has stepped rounds + 1 rounds; group 0's messages give the agreed time.
+        ++out.rounds;
+        lastRound = now - out.elapsed;
+        out.elapsed = now;
+        const bool more = schedule.anotherRound(out.rounds, out.elapsed, lastRound);
+        if (hooks.roundDone) hooks.roundDone(out.rounds, out.elapsed, more);
+        if (!more) {
+          for (int h = 1; h < groups; ++h) s.finish(h, out.rounds - 1);
+          return out;
+        }
+      }
+      s.stepAndPost(g, out.rounds);
+    }
+  }
+}
+
+void LocalTransport::post(int group, std::vector<double> mine, const std::vector<size_t>&) {
+  if (posted_.size() <= size_t(group)) posted_.resize(size_t(group) + 1);
+  posted_[size_t(group)] = std::move(mine);
+}
+
+std::vector<std::vector<double>> LocalTransport::wait(int group) { return {std::move(posted_[size_t(group)])}; }
+
+}  // namespace relt

@@ -1,0 +1,57 @@
+#pragma once
+// The order of a replica render's rounds, shared by the MPI driver and the in-process renderer.
+// The ladders form two groups whose rounds are staggered by half a round: a rank steps group 0,
+// starts its collective, steps group 1, starts that one, and only then waits for group 0's. A rank
+// therefore waits only when another is more than half a round behind, not at every round's
+// slowest rank, and the collective's latency hides behind the other group's work. Every group still
+// takes the same steps per round; exchanges, normalisers and placement follow the same fixed order
+// on every rank, so the image does not depend on timing or rank count.
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "film/film.h"
+#include "replica/replica_pool.h"
+#include "replica/replica_schedule.h"
+
+namespace relt {
+
+// How a rank's pool meets the others: the MPI layer's collectives, or one process playing all.
+class RoundTransport {
+ public:
+  virtual ~RoundTransport() = default;
+  // Starts the collective of a group's round: every rank's message, rank r's `lengths[r]` long.
+  virtual void post(int group, std::vector<double> mine, const std::vector<size_t>& lengths) = 0;
+  // Completes it: every rank's message, in rank order.
+  virtual std::vector<std::vector<double>> wait(int group) = 0;
+  // Carries out pool.plannedMoves() (chain states travel) and commits them on every rank.
+  virtual void migrate(ReplicaPool& pool) = 0;
+};
+
+struct RoundLoopHooks {
+  std::function<double()> elapsed;  // this rank's seconds since the loop started
+  // After each round every group has stepped: rounds so far, the ranks' agreed elapsed time, and
+  // whether another round follows (snapshots, progress).
+  std::function<void(uint64_t rounds, double elapsed, bool more)> roundDone;
+};
+
+struct RoundLoopResult {
+  uint64_t rounds = 0;   // rounds every chain took
+  double elapsed = 0.0;  // agreed elapsed time at the end
+};
+
+RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule, RoundTransport& transport,
+                             std::vector<Film>& films, const RoundLoopHooks& hooks);
+
+// One process plays every rank (rank 0 of 1): the in-process renderer and tests.
+class LocalTransport final : public RoundTransport {
+ public:
+  void post(int group, std::vector<double> mine, const std::vector<size_t>&) override;
+  std::vector<std::vector<double>> wait(int group) override;
+  void migrate(ReplicaPool& pool) override { pool.commitMoves(); }
+
+ private:
+  std::vector<std::vector<double>> posted_;
+};
+
+}  // namespace relt
