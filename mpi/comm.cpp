@@ -147,6 +147,11 @@ PendingAllgatherv::~PendingAllgatherv() {
   if (request_ != MPI_REQUEST_NULL) MPI_Wait(&request_, MPI_STATUS_IGNORE);
 }
 
+void PendingAllgatherv::test() {
+  int done = 0;
+  if (request_ != MPI_REQUEST_NULL) MPI_Test(&request_, &done, MPI_STATUS_IGNORE);
+}
+
 std::vector<std::vector<double>> PendingAllgatherv::wait() {
   timed([&] { MPI_Wait(&request_, MPI_STATUS_IGNORE); });
   std::vector<std::vector<double>> out(counts_.size());

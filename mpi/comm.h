@@ -64,6 +64,8 @@ class PendingAllgatherv {
   ~PendingAllgatherv();
   // Every rank's buffer, in rank order.
   std::vector<std::vector<double>> wait();
+  // Lets MPI advance the collective (Open MPI moves a nonblocking collective only inside MPI calls).
+  void test();
 
  private:
   std::vector<double> mine_, all_;

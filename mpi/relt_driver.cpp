@@ -56,6 +56,11 @@ class MpiTransport final : public RoundTransport {
     pool.commitMoves();
   }
 
+  void progress() override {
+    for (const std::unique_ptr<PendingAllgatherv>& p : pending_)
+      if (p) p->test();
+  }
+
  private:
   int rank_;
   std::vector<std::unique_ptr<PendingAllgatherv>> pending_;

@@ -95,7 +95,7 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   }
 }
 
-void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films) {
+void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films, const std::function<void()>& progress) {
   // Regularisation shrinks with the steps taken so far; it is checked when group 0 starts a round,
   // where every group has taken the same steps. When it moves the targets are new: states are
   // evaluated again (a group whose exchange is still pending keeps its old targets for that
@@ -121,6 +121,7 @@ void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films) 
     }
     Film& film = films.size() > 1 ? films[size_t(chain.level())] : films[0];
     chain.run(steps, evaluator_, estimator_, film, pendingLarge_[size_t(group)]);
+    if (progress) progress();
   }
 }
 

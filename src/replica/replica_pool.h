@@ -8,6 +8,7 @@
 // keyed by seed, ladder and round) and updates the level labels; states stay where they are
 // except when load balancing moves chains. Rank-agnostic: the image depends on (seed, L, M, steps).
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -45,8 +46,9 @@ class ReplicaPool {
   // False when no bootstrap sample saw light: the image is black and no chain runs.
   bool active() const { return active_; }
 
-  // Steps every hosted chain of `group` `steps` times. films: one, or one per level (per-level layers).
-  void runRound(int group, uint64_t steps, std::vector<Film>& films);
+  // Steps every hosted chain of `group` `steps` times. films: one, or one per level (per-level
+  // layers). `progress`, if given, runs after each chain (the MPI layer moves pending messages).
+  void runRound(int group, uint64_t steps, std::vector<Film>& films, const std::function<void()>& progress = {});
   // This rank's message for the group's collective (`roundSeconds`: time this rank spent in
   // runRound), and the length rank `rank`'s message has (it changes when chains move).
   std::vector<double> roundMessage(int group, double elapsed, double roundSeconds);

@@ -23,7 +23,7 @@ struct Stepper {
   // Steps a group's chains for round `round` and starts its collective.
   void stepAndPost(int group, uint64_t round) {
     const auto t0 = Clock::now();
-    pool.runRound(group, schedule.stepsInRound(round), films);
+    pool.runRound(group, schedule.stepsInRound(round), films, [this] { transport.progress(); });
     const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     transport.post(group, pool.roundMessage(group, hooks.elapsed(), seconds), lengths(group));
   }

@@ -26,6 +26,9 @@ class RoundTransport {
   virtual std::vector<std::vector<double>> wait(int group) = 0;
   // Carries out pool.plannedMoves() (chain states travel) and commits them on every rank.
   virtual void migrate(ReplicaPool& pool) = 0;
+  // Called between chains while stepping: nonblocking collectives advance only inside MPI calls,
+  // so without it a posted collective would wait for the next wait().
+  virtual void progress() {}
 };
 
 struct RoundLoopHooks {
