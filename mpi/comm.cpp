@@ -84,6 +84,18 @@ std::vector<double> allgather(double value) {
   return out;
 }
 
+std::vector<std::string> processorNames() {
+  int size = 1, length = 0;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  std::vector<char> mine(MPI_MAX_PROCESSOR_NAME, '\0'), all(size_t(size) * MPI_MAX_PROCESSOR_NAME);
+  MPI_Get_processor_name(mine.data(), &length);
+  MPI_Allgather(mine.data(), MPI_MAX_PROCESSOR_NAME, MPI_CHAR, all.data(), MPI_MAX_PROCESSOR_NAME, MPI_CHAR,
+                MPI_COMM_WORLD);
+  std::vector<std::string> out;
+  for (int r = 0; r < size; ++r) out.emplace_back(all.data() + size_t(r) * MPI_MAX_PROCESSOR_NAME);
+  return out;
+}
+
 std::vector<std::vector<double>> allgatherv(const std::vector<double>& mine, const std::vector<size_t>& lengths) {
   std::vector<int> counts(lengths.size()), offsets(lengths.size());
   int total = 0;

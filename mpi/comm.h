@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace relt::mpi {
@@ -37,6 +38,8 @@ double collectiveSeconds();
 namespace relt::mpi {
 // Every rank's value, in rank order, on every rank.
 std::vector<double> allgather(double value);
+// Every rank's processor (host) name, in rank order, on every rank.
+std::vector<std::string> processorNames();
 // Every rank's buffer, in rank order, on every rank; lengths[r] is rank r's buffer length (known
 // to all in advance, so one MPI_Allgatherv suffices).
 std::vector<std::vector<double>> allgatherv(const std::vector<double>& mine, const std::vector<size_t>& lengths);

@@ -67,6 +67,7 @@ struct Gathered {
   double renderSeconds = 0.0;
   uint64_t rays = 0, dropped = 0;
   std::vector<double> collective;
+  std::vector<std::string> hosts;  // each rank's processor name
 };
 
 Gathered gatherAfterRender(Clock::time_point renderStart, const Renderer& renderer, Film& film) {
@@ -76,6 +77,7 @@ Gathered gatherAfterRender(Clock::time_point renderStart, const Renderer& render
   g.rays = allreduceSum(renderer.rays());
   g.dropped = allreduceSum(film.droppedSamples());
   g.collective = allgather(collectiveSeconds());
+  g.hosts = processorNames();
   return g;
 }
 
@@ -85,6 +87,7 @@ nlohmann::json commonStats(const RenderSettings& settings, const Session& sessio
   nlohmann::json j;
   j["settings"] = settings.toJson();
   j["ranks"] = session.size();
+  j["hosts"] = g.hosts;
   j["rays"] = g.rays;
   j["render_seconds"] = g.renderSeconds;
   j["rays_per_second"] = g.rays / std::max(g.renderSeconds, 1e-9);

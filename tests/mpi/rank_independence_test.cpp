@@ -26,18 +26,6 @@ Image renderWithRanks(int ranks, const std::string& integrator, const std::strin
   return readExr(out);
 }
 
-void expectSameImage(const Image& a, const Image& b) {
-  ASSERT_EQ(a.width, b.width);
-  ASSERT_EQ(a.height, b.height);
-  double maxRel = 0.0;
-  for (size_t i = 0; i < a.rgb.size(); ++i) {
-    const double scale = std::max({std::abs(double(a.rgb[i])), std::abs(double(b.rgb[i])), 1e-6});
-    maxRel = std::max(maxRel, std::abs(double(a.rgb[i]) - double(b.rgb[i])) / scale);
-  }
-  EXPECT_LE(maxRel, 1e-5);
-  EXPECT_GT(a.mean(), 0.0);
-}
-
 }  // namespace
 
 TEST(RankIndependence, BdptImageIsTheSameOnOneAndTwoRanks) {

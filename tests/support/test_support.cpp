@@ -4,8 +4,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
 #include <array>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
@@ -40,5 +44,17 @@ std::string makeTempDir(const std::string& tag) {
 }
 
 bool fileExists(const std::string& path) { return std::filesystem::exists(path); }
+
+void expectSameImage(const Image& a, const Image& b) {
+  ASSERT_EQ(a.width, b.width);
+  ASSERT_EQ(a.height, b.height);
+  double maxRel = 0.0;
+  for (size_t i = 0; i < a.rgb.size(); ++i) {
+    const double scale = std::max({std::abs(double(a.rgb[i])), std::abs(double(b.rgb[i])), 1e-6});
+    maxRel = std::max(maxRel, std::abs(double(a.rgb[i]) - double(b.rgb[i])) / scale);
+  }
+  EXPECT_LE(maxRel, 1e-5);
+  EXPECT_GT(a.mean(), 0.0);
+}
 
 }  // namespace relt::test

@@ -2,6 +2,8 @@
 // Shared helpers for relt's tests.
 #include <string>
 
+#include "image/image.h"
+
 namespace relt::test {
 
 // Absolute path of a file in the source tree, e.g. sourcePath("scenes/cornell-box.gltf").
@@ -21,5 +23,9 @@ std::string mpirun(int ranks);
 // A fresh empty directory under the system temp dir, unique per call.
 std::string makeTempDir(const std::string& tag);
 bool fileExists(const std::string& path);
+
+// Two renders of the same samples (e.g. on different rank counts) agree up to the order of
+// floating-point sums: every pixel within 1e-5 relative; the image is not black.
+void expectSameImage(const Image& a, const Image& b);
 
 }  // namespace relt::test
