@@ -105,6 +105,7 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   MpiTransport transport(session.rank());
   const RoundLoopResult loop = runRoundLoop(pool, schedule, transport, films, hooks);
   const uint64_t rounds = loop.rounds;
+  const std::vector<double> stepMean = allgather(loop.stepMean), stepDeviation = allgather(loop.stepDeviation);
   const double elapsed = loop.elapsed;
   if (session.isRoot() && tty && lastPrint > 0.0) std::fprintf(stderr, "\n");
   const double roundCollective = collectiveSeconds() - collectiveBefore;
@@ -119,6 +120,8 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   out.tally = pool.tally();
   out.roundTrips = pool.roundTrips().total();
   out.chainMoves = pool.chainMoves();
+  out.stepMean = stepMean;
+  out.stepDeviation = stepDeviation;
   for (int r = 0; r < session.size(); ++r) out.chainsPerRank.push_back(pool.hostedCount(r));
   out.bootstrapSamples = uint64_t(rs.bootstrap);
   out.resolveDivisor = replicaResolveDivisor(out.stepsPerChain, rs.ladders, area);

@@ -23,6 +23,7 @@ struct ReltOutcome {
   uint64_t roundTrips = 0;
   uint64_t chainMoves = 0;                  // chains moved between ranks by load balancing
   std::vector<int> chainsPerRank;           // placement at the end
+  std::vector<double> stepMean, stepDeviation;  // per rank: seconds stepping a group for a round
   uint64_t bootstrapSamples = 0;
   double resolveDivisor = 0.0;              // film sums -> pixels
   double loopSeconds = 0.0;                 // the round loop (agreed elapsed time)

@@ -117,6 +117,9 @@ nlohmann::json reltStats(const mpi::ReltOutcome& o) {
   j["round_collective_seconds_per_rank"] = o.roundCollectiveSeconds;
   j["chain_moves"] = o.chainMoves;
   j["chains_per_rank"] = o.chainsPerRank;
+  j["groups"] = std::min(2, o.ladders);
+  j["group_round_step_seconds_mean_per_rank"] = o.stepMean;
+  j["group_round_step_seconds_deviation_per_rank"] = o.stepDeviation;
   nlohmann::json levels = nlohmann::json::array();
   for (int k = 0; k < o.levels; ++k) {
     const LevelCounters& c = o.perLevel[size_t(k)];

@@ -11,7 +11,7 @@ namespace relt {
 
 enum class Placement : uint8_t {
   Spread,  // chain c on rank c mod P: every rank holds a mix of levels (balanced work)
-  Packed,  // ladder l on rank l mod P: whole ladders per rank, exchanges stay local
+  Packed,  // ladders 2j and 2j + 1 on rank j mod P: whole ladders per rank, both round groups on each
 };
 
 inline std::optional<Placement> parsePlacement(std::string_view name) {
@@ -21,9 +21,10 @@ inline std::optional<Placement> parsePlacement(std::string_view name) {
 }
 inline const char* placementName(Placement placement) { return placement == Placement::Spread ? "spread" : "packed"; }
 
-// The rank that hosts chain c (ladder c / levels).
+// The rank that hosts chain c (ladder c / levels). Packed keeps an even and an odd ladder together,
+// so every rank steps chains in both staggered round groups (even and odd ladders).
 inline int chainRank(int chain, int levels, int ranks, Placement placement) {
-  return placement == Placement::Spread ? chain % ranks : (chain / levels) % ranks;
+  return placement == Placement::Spread ? chain % ranks : (chain / levels / 2) % ranks;
 }
 
 // How chains get their first states (DESIGN §3.4).

@@ -1,6 +1,8 @@
 #include "replica/round_loop.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace relt {
 namespace {
@@ -13,6 +15,7 @@ struct Stepper {
   RoundTransport& transport;
   std::vector<Film>& films;
   const RoundLoopHooks& hooks;
+  double steppings = 0.0, sum = 0.0, sumSquares = 0.0;  // per-group-round stepping times
 
   std::vector<size_t> lengths(int group) const {
     std::vector<size_t> out;
@@ -25,6 +28,9 @@ struct Stepper {
     const auto t0 = Clock::now();
     pool.runRound(group, schedule.stepsInRound(round), films, [this] { transport.progress(); });
     const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    steppings += 1.0;
+    sum += seconds;
+    sumSquares += seconds * seconds;
     transport.post(group, pool.roundMessage(group, hooks.elapsed(), seconds), lengths(group));
   }
   // Completes a group's collective for round `round`: exchanges, normalisers, chain moves.
@@ -58,6 +64,8 @@ RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule,
         if (hooks.roundDone) hooks.roundDone(out.rounds, out.elapsed, more);
         if (!more) {
           for (int h = 1; h < groups; ++h) s.finish(h, out.rounds - 1);
+          out.stepMean = s.sum / s.steppings;
+          out.stepDeviation = std::sqrt(std::max(0.0, s.sumSquares / s.steppings - out.stepMean * out.stepMean));
           return out;
         }
       }

@@ -41,6 +41,9 @@ struct RoundLoopHooks {
 struct RoundLoopResult {
   uint64_t rounds = 0;   // rounds every chain took
   double elapsed = 0.0;  // agreed elapsed time at the end
+  // This rank's time stepping one group for one round: mean and standard deviation over the
+  // render (inputs of the scaling model: compute per round and its spread).
+  double stepMean = 0.0, stepDeviation = 0.0;
 };
 
 RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule, RoundTransport& transport,
