@@ -20,7 +20,7 @@ constexpr int kExitInternal = 1;
 struct Options {
   relt::RenderSettings render;
   std::string integrator = "bdpt", mis = "power";
-  std::string family = "kitaoka", exchange = "deo", placement = "spread", misLevels = "balance", init = "resample";
+  std::string family = "kitaoka", exchange = "deo", placement = "auto", misLevels = "balance", init = "resample";
   CLI::Option* chains = nullptr;
   std::vector<CLI::Option*> reltOnly;  // options that only relt takes
   std::string infoScene;
@@ -46,8 +46,10 @@ void addReplicaOptions(CLI::App& cmd, Options& o) {
   only(cmd.add_option("--exchange-interval", r.exchangeInterval, "relt: steps per chain between exchanges")
            ->check(CLI::Range(1, 1 << 20))
            ->capture_default_str());
-  only(cmd.add_option("--placement", o.placement, "relt: chains over ranks (spread: chain c on rank c mod P; packed: whole ladders)")
-           ->check(CLI::IsMember({"spread", "packed"}))
+  only(cmd.add_option("--placement", o.placement,
+                      "relt: chains over ranks (spread: chain c on rank c mod P; packed: whole ladders, exchanges decided "
+                      "locally; auto: packed when ladders >= 2 x ranks)")
+           ->check(CLI::IsMember({"auto", "spread", "packed"}))
            ->capture_default_str());
   only(cmd.add_option("--balance-window", r.balanceWindow,
                       "relt: seconds of stepping between moves of chains to ranks in proportion to their measured "

@@ -27,6 +27,23 @@ std::vector<double> reducedSum(const std::vector<Film>& films) {
   return sums;
 }
 
+// Exchange counts of every rank's ladders (with local decisions each rank counts only its own).
+ExchangeTally sumOverRanks(const ExchangeTally& mine) {
+  std::vector<double> v;
+  for (uint64_t x : mine.proposed) v.push_back(double(x));
+  for (uint64_t x : mine.accepted) v.push_back(double(x));
+  for (uint64_t x : mine.changed) v.push_back(double(x));
+  v.push_back(double(mine.rounds));
+  allreduceSum(v);  // exact: counts stay far below 2^53
+  ExchangeTally out(mine.levels);
+  size_t k = 0;
+  for (uint64_t& x : out.proposed) x = uint64_t(v[k++]);
+  for (uint64_t& x : out.accepted) x = uint64_t(v[k++]);
+  for (uint64_t& x : out.changed) x = uint64_t(v[k++]);
+  out.rounds = uint64_t(v[k]);
+  return out;
+}
+
 // The round loop's transport over MPI: one nonblocking allgatherv per group and round; chain
 // states point to point.
 class MpiTransport final : public RoundTransport {
@@ -106,6 +123,7 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   const RoundLoopResult loop = runRoundLoop(pool, schedule, transport, films, hooks);
   const uint64_t rounds = loop.rounds;
   const std::vector<double> stepMean = allgather(loop.stepMean), stepDeviation = allgather(loop.stepDeviation);
+  const std::vector<double> finishMean = allgather(loop.finishMean);
   const double elapsed = loop.elapsed;
   if (session.isRoot() && tty && lastPrint > 0.0) std::fprintf(stderr, "\n");
   const double roundCollective = collectiveSeconds() - collectiveBefore;
@@ -117,11 +135,13 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   out.levels = pool.levels();
   for (int k = 0; k < pool.levels(); ++k) out.levelNames.push_back(pool.family().name(k));
   out.normalisers = pool.normalisers();
-  out.tally = pool.tally();
-  out.roundTrips = pool.roundTrips().total();
+  out.placement = pool.placement();
+  out.tally = pool.localDecisions() ? sumOverRanks(pool.tally()) : pool.tally();
+  out.roundTrips = pool.localDecisions() ? allreduceSum(pool.roundTrips().total()) : pool.roundTrips().total();
   out.chainMoves = pool.chainMoves();
   out.stepMean = stepMean;
   out.stepDeviation = stepDeviation;
+  out.finishMean = finishMean;
   for (int r = 0; r < session.size(); ++r) out.chainsPerRank.push_back(pool.hostedCount(r));
   out.bootstrapSamples = uint64_t(rs.bootstrap);
   out.resolveDivisor = replicaResolveDivisor(out.stepsPerChain, rs.ladders, area);

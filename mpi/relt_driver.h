@@ -21,9 +21,11 @@ struct ReltOutcome {
   std::vector<LevelCounters> perLevel;      // summed over ranks
   ExchangeTally tally;
   uint64_t roundTrips = 0;
+  Placement placement = Placement::Spread;  // in use (auto resolved)
   uint64_t chainMoves = 0;                  // chains moved between ranks by load balancing
   std::vector<int> chainsPerRank;           // placement at the end
   std::vector<double> stepMean, stepDeviation;  // per rank: seconds stepping a group for a round
+  std::vector<double> finishMean;               // per rank: seconds in a group round's finishRound
   uint64_t bootstrapSamples = 0;
   double resolveDivisor = 0.0;              // film sums -> pixels
   double loopSeconds = 0.0;                 // the round loop (agreed elapsed time)

@@ -115,11 +115,13 @@ nlohmann::json reltStats(const mpi::ReltOutcome& o) {
   j["bootstrap_samples"] = o.bootstrapSamples;
   j["loop_seconds"] = o.loopSeconds;
   j["round_collective_seconds_per_rank"] = o.roundCollectiveSeconds;
+  j["placement"] = placementName(o.placement);
   j["chain_moves"] = o.chainMoves;
   j["chains_per_rank"] = o.chainsPerRank;
   j["groups"] = std::min(2, o.ladders);
   j["group_round_step_seconds_mean_per_rank"] = o.stepMean;
   j["group_round_step_seconds_deviation_per_rank"] = o.stepDeviation;
+  j["group_round_finish_seconds_mean_per_rank"] = o.finishMean;
   nlohmann::json levels = nlohmann::json::array();
   for (int k = 0; k < o.levels; ++k) {
     const LevelCounters& c = o.perLevel[size_t(k)];

@@ -62,6 +62,9 @@ class RoundTrips {
   void visit(int chain, int level);
   uint64_t trips(int chain) const { return trips_[size_t(chain)]; }
   uint64_t total() const;
+  // Where chain c is in its trip (moves with the chain when only its host tracks it).
+  uint8_t phase(int chain) const { return static_cast<uint8_t>(phase_[size_t(chain)]); }
+  void setPhase(int chain, uint8_t phase) { phase_[size_t(chain)] = static_cast<Phase>(phase); }
 
  private:
   enum class Phase : uint8_t { Unseen, SeenBottom, ReachedTop };

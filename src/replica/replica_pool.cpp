@@ -36,6 +36,7 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
       family_(settings.family, LevelFamily::meanTarget(settings.family, bootstrap)),
       estimator_(family_, settings.beta),
       evaluator_(eval, family_),
+      placement_(resolvePlacement(settings.placement, settings.ladders, ranks)),
       departed_(size_t(family_.levels())),
       tally_(family_.levels()),
       trips_(settings.ladders * family_.levels(), family_.levels()) {
@@ -71,7 +72,8 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   }
   hostedByRank_.resize(size_t(ranks_));
   for (int c = 0; c < chainCount(); ++c)
-    hostedByRank_[size_t(chainRank(c, m, ranks_, settings_.placement))].push_back(c);
+    hostedByRank_[size_t(chainRank(c, m, ranks_, placement_))].push_back(c);
+  localIndex_.assign(size_t(chainCount()), -1);
   // Nothing visible (I = 0 everywhere the bootstrap looked): no chain runs, the image stays black.
   active_ = LevelFamily::meanTarget(settings.family, bootstrap) > 0.0;
   if (!active_) return;
@@ -93,6 +95,12 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
       chain.start(evaluator_, bootstrapKey(seed, chain.pickBootstrap(start[size_t(level)])));
     }
   }
+  reindex();
+}
+
+void ReplicaPool::reindex() {
+  std::fill(localIndex_.begin(), localIndex_.end(), -1);
+  for (size_t i = 0; i < hosted().size(); ++i) localIndex_[size_t(hosted()[i])] = int(i);
 }
 
 void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films, const std::function<void()>& progress) {
@@ -127,6 +135,7 @@ void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films, 
 
 size_t ReplicaPool::messageLength(int group, int rank) const {
   if (!active_) return 3;
+  if (localDecisions()) return size_t(levels()) + 3;
   size_t chains = 0;
   for (int c : hostedByRank_[size_t(rank)]) chains += groupOf(c) == group;
   return chains * size_t(levels()) + size_t(levels()) + 3;
@@ -137,8 +146,9 @@ std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double 
   msg.reserve(messageLength(group, rank_));
   LargeStepSums& large = pendingLarge_[size_t(group)];
   if (active_) {
-    for (size_t i = 0; i < chains_.size(); ++i)
-      if (groupOf(hosted()[i]) == group) msg.insert(msg.end(), chains_[i].targets(), chains_[i].targets() + levels());
+    if (!localDecisions())
+      for (size_t i = 0; i < chains_.size(); ++i)
+        if (groupOf(hosted()[i]) == group) msg.insert(msg.end(), chains_[i].targets(), chains_[i].targets() + levels());
     msg.insert(msg.end(), large.sum.begin(), large.sum.end());
   }
   msg.push_back(double(large.count));
@@ -159,14 +169,16 @@ double ReplicaPool::finishRound(int group, const std::vector<std::vector<double>
   }
   if (!active_) return elapsed;
 
-  // The group's chains' targets, by global id, and the large-step sums (dropped when the
-  // regularisation moved after they were taken).
+  // The group's chains' targets, by global id (with local decisions the hosted ones, read from the
+  // chains), and the large-step sums (dropped when the regularisation moved after they were taken).
   const bool current = messageEpoch_[size_t(group)] == epoch_;
   std::vector<const double*> targetsOf(size_t(chainCount()), nullptr);
+  if (localDecisions())
+    for (size_t i = 0; i < chains_.size(); ++i) targetsOf[size_t(hosted()[i])] = chains_[i].targets();
   for (int r = 0; r < int(messages.size()); ++r) {
     const double* msg = messages[size_t(r)].data();
     for (int c : hostedByRank_[size_t(r)]) {
-      if (groupOf(c) != group) continue;
+      if (localDecisions() || groupOf(c) != group) continue;
       targetsOf[size_t(c)] = msg;
       msg += m;
     }
@@ -179,6 +191,7 @@ double ReplicaPool::finishRound(int group, const std::vector<std::vector<double>
   std::vector<int> holder(static_cast<size_t>(m));
   for (int ladder = group; ladder < settings_.ladders; ladder += groups()) {
     const int first = ladder * m;
+    if (localDecisions() && localIndex_[size_t(first)] < 0) continue;  // another rank's ladder
     for (int c = first; c < first + m; ++c) holder[size_t(levelOf_[size_t(c)])] = c;
     TargetMatrix q(m);
     for (int i = 0; i < m; ++i)
@@ -210,29 +223,43 @@ double ReplicaPool::finishRound(int group, const std::vector<std::vector<double>
   const double needed = settings_.balanceWindow / double(1 << std::max(0, 3 - int(decisions)));
   if (settings_.balanceWindow > 0.0 && ranks_ > 1 && slowest * groups() >= needed) {
     ++decisions;
-    std::vector<std::vector<int>> groupHosted(static_cast<size_t>(ranks_));
-    std::vector<int> counts(static_cast<size_t>(ranks_));
-    for (int r = 0; r < ranks_; ++r) {
-      for (int c : hostedByRank_[size_t(r)])
-        if (groupOf(c) == group) groupHosted[size_t(r)].push_back(c);
-      counts[size_t(r)] = int(groupHosted[size_t(r)].size());
-    }
-    moves_ = planMoves(groupHosted, balancedCounts(counts, window, 0.01));
+    moves_ = balanceMoves(group, window);
     window.assign(window.size(), 0.0);
   }
   return elapsed;
 }
 
+std::vector<ChainMove> ReplicaPool::balanceMoves(int group, const std::vector<double>& seconds) const {
+  // The units that move: chains, or whole ladders (named by their first chain) with local decisions.
+  const int m = levels();
+  const int unit = localDecisions() ? m : 1;
+  std::vector<std::vector<int>> units(static_cast<size_t>(ranks_));
+  std::vector<int> counts(static_cast<size_t>(ranks_));
+  for (int r = 0; r < ranks_; ++r) {
+    for (int c : hostedByRank_[size_t(r)])
+      if (groupOf(c) == group && c % unit == 0) units[size_t(r)].push_back(c);
+    counts[size_t(r)] = int(units[size_t(r)].size());
+  }
+  std::vector<ChainMove> moves;
+  for (const ChainMove& u : planMoves(units, balancedCounts(counts, seconds, 0.01)))
+    for (int k = 0; k < unit; ++k) moves.push_back({u.chain + k, u.from, u.to});
+  return moves;
+}
+
 std::vector<uint64_t> ReplicaPool::exportChain(int chain) {
-  const std::vector<int>& ids = hosted();
-  const size_t i = size_t(std::find(ids.begin(), ids.end(), chain) - ids.begin());
-  if (i == ids.size()) throw std::logic_error("exporting a chain this rank does not host");
+  if (localIndex_[size_t(chain)] < 0) throw std::logic_error("exporting a chain this rank does not host");
+  const size_t i = size_t(localIndex_[size_t(chain)]);
   for (int k = 0; k < levels(); ++k) departed_[size_t(k)].add(chains_[i].counters()[size_t(k)]);
-  return chains_[i].serialize();
+  std::vector<uint64_t> state = chains_[i].serialize();
+  state.push_back(trips_.phase(chain));  // only the host tracks it with local decisions
+  return state;
 }
 
 void ReplicaPool::importChain(int chain, const std::vector<uint64_t>& state) {
-  imported_.emplace_back(chain, ReplicaChain(state, family_, evaluator_));
+  if (state.empty()) throw std::runtime_error("empty replica-chain state");
+  imported_.emplace_back(chain, ReplicaChain(std::vector<uint64_t>(state.begin(), state.end() - 1), family_, evaluator_));
+  trips_.setPhase(chain, uint8_t(state.back()));
+  levelOf_[size_t(chain)] = imported_.back().second.level();
   epochOf_[size_t(chain)] = epoch_;  // traced again under today's targets
 }
 
@@ -241,10 +268,8 @@ void ReplicaPool::commitMoves() {
   std::vector<ReplicaChain> chains;
   chains.reserve(next[size_t(rank_)].size());
   for (int id : next[size_t(rank_)]) {
-    const std::vector<int>& ids = hosted();
-    const auto kept = std::find(ids.begin(), ids.end(), id);
-    if (kept != ids.end()) {
-      chains.push_back(std::move(chains_[size_t(kept - ids.begin())]));
+    if (localIndex_[size_t(id)] >= 0) {  // kept (the index is still the old one)
+      chains.push_back(std::move(chains_[size_t(localIndex_[size_t(id)])]));
       continue;
     }
     const auto in = std::find_if(imported_.begin(), imported_.end(), [id](const auto& p) { return p.first == id; });
@@ -253,6 +278,7 @@ void ReplicaPool::commitMoves() {
   }
   chains_ = std::move(chains);
   hostedByRank_ = std::move(next);
+  reindex();
   chainMoves_ += moves_.size();
   moves_.clear();
   imported_.clear();

@@ -42,6 +42,10 @@ class ReplicaPool {
   int chainCount() const { return settings_.ladders * levels(); }
   int groups() const { return int(pendingLarge_.size()); }
   int rankCount() const { return ranks_; }
+  // The placement in use (auto resolved). Packed: every ladder lives whole on one rank, whose
+  // exchanges only it decides; messages carry no targets and chains move a ladder at a time.
+  Placement placement() const { return placement_; }
+  bool localDecisions() const { return placement_ == Placement::Packed; }
   int groupOf(int chain) const { return (chain / levels()) % groups(); }
   // False when no bootstrap sample saw light: the image is black and no chain runs.
   bool active() const { return active_; }
@@ -67,16 +71,20 @@ class ReplicaPool {
   uint64_t chainMoves() const { return chainMoves_; }  // chains moved so far
   int hostedCount(int rank) const { return int(hostedByRank_[size_t(rank)].size()); }
 
-  // Diagnostics. Exchange tallies and round trips are the same on every rank; level counters
-  // cover the hosted chains (the MPI layer sums them).
+  // Diagnostics. Exchange tallies and round trips are the same on every rank (with local
+  // decisions: of the hosted ladders only, the MPI layer sums them); level counters cover the
+  // hosted chains (the MPI layer sums them).
   const ExchangeTally& tally() const { return tally_; }
   const RoundTrips& roundTrips() const { return trips_; }
   std::vector<LevelCounters> hostedCounters() const;
   const std::vector<double>& normalisers() const { return estimator_.normalisers(); }
-  int levelOf(int chain) const { return levelOf_[size_t(chain)]; }
+  int levelOf(int chain) const { return levelOf_[size_t(chain)]; }  // with local decisions: hosted chains only
+  bool hosts(int chain) const { return localIndex_[size_t(chain)] >= 0; }
 
  private:
   const std::vector<int>& hosted() const { return hostedByRank_[size_t(rank_)]; }
+  void reindex();  // localIndex_ from hosted()
+  std::vector<ChainMove> balanceMoves(int group, const std::vector<double>& seconds) const;
 
   ReplicaSettings settings_;
   uint64_t seed_;
@@ -85,7 +93,9 @@ class ReplicaPool {
   LevelEstimator estimator_;
   LevelEvaluator evaluator_;
   bool active_ = false;
+  Placement placement_;
   std::vector<std::vector<int>> hostedByRank_;  // global chain ids each rank hosts (placement)
+  std::vector<int> localIndex_;         // every chain's index in chains_, -1 if hosted elsewhere
   std::vector<ReplicaChain> chains_;    // this rank's, in hosted() order
   std::vector<std::vector<double>> windowSeconds_;  // per group, every rank's stepping time since its last placement decision
   std::vector<ChainMove> moves_;        // planned, not yet committed

@@ -10,16 +10,28 @@
 namespace relt {
 
 enum class Placement : uint8_t {
-  Spread,  // chain c on rank c mod P: every rank holds a mix of levels (balanced work)
-  Packed,  // ladders 2j and 2j + 1 on rank j mod P: whole ladders per rank, both round groups on each
+  Spread,  // chain c on rank c mod P: ladders span ranks; every rank decides every ladder's exchange
+  Packed,  // ladders 2j and 2j + 1 on rank j mod P: whole ladders per rank, exchanges decided locally
+  Auto,    // packed when every rank can hold a ladder of each round group, else spread
 };
 
 inline std::optional<Placement> parsePlacement(std::string_view name) {
   if (name == "spread") return Placement::Spread;
   if (name == "packed") return Placement::Packed;
+  if (name == "auto") return Placement::Auto;
   return std::nullopt;
 }
-inline const char* placementName(Placement placement) { return placement == Placement::Spread ? "spread" : "packed"; }
+inline const char* placementName(Placement placement) {
+  return placement == Placement::Spread ? "spread" : placement == Placement::Packed ? "packed" : "auto";
+}
+
+// Packed placement keeps each round's work per rank independent of the rank count (no ladder's
+// targets travel, no rank decides another's exchanges: docs/SCALING.md); it needs two ladders per
+// rank so that each rank steps in both round groups.
+inline Placement resolvePlacement(Placement placement, int ladders, int ranks) {
+  if (placement != Placement::Auto) return placement;
+  return ladders >= 2 * ranks ? Placement::Packed : Placement::Spread;
+}
 
 // The rank that hosts chain c (ladder c / levels). Packed keeps an even and an odd ladder together,
 // so every rank steps chains in both staggered round groups (even and odd ladders).
@@ -43,7 +55,7 @@ struct ReplicaSettings {
   int ladders = 32;
   ExchangeOptions exchange;
   int exchangeInterval = 16;  // steps per chain between exchanges
-  Placement placement = Placement::Spread;  // where chains start
+  Placement placement = Placement::Auto;  // where chains start
   double balanceWindow = 0.25;  // seconds of stepping (slowest rank) between placement decisions (0: never)
   double beta = 1.0;          // MIS over levels: 1 balance, 2 power heuristic
   int bootstrap = 100000;

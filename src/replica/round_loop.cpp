@@ -16,6 +16,7 @@ struct Stepper {
   std::vector<Film>& films;
   const RoundLoopHooks& hooks;
   double steppings = 0.0, sum = 0.0, sumSquares = 0.0;  // per-group-round stepping times
+  double finishes = 0.0, finishSum = 0.0;                // time in finishRound
 
   std::vector<size_t> lengths(int group) const {
     std::vector<size_t> out;
@@ -35,7 +36,11 @@ struct Stepper {
   }
   // Completes a group's collective for round `round`: exchanges, normalisers, chain moves.
   double finish(int group, uint64_t round) {
-    const double elapsed = pool.finishRound(group, transport.wait(group), round);
+    const std::vector<std::vector<double>> messages = transport.wait(group);
+    const auto t0 = Clock::now();
+    const double elapsed = pool.finishRound(group, messages, round);
+    finishes += 1.0;
+    finishSum += std::chrono::duration<double>(Clock::now() - t0).count();
     if (!pool.plannedMoves().empty()) transport.migrate(pool);
     return elapsed;
   }
@@ -65,6 +70,7 @@ RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule,
         if (!more) {
           for (int h = 1; h < groups; ++h) s.finish(h, out.rounds - 1);
           out.stepMean = s.sum / s.steppings;
+          out.finishMean = s.finishSum / s.finishes;
           out.stepDeviation = std::sqrt(std::max(0.0, s.sumSquares / s.steppings - out.stepMean * out.stepMean));
           return out;
         }

@@ -44,6 +44,9 @@ struct RoundLoopResult {
   // This rank's time stepping one group for one round: mean and standard deviation over the
   // render (inputs of the scaling model: compute per round and its spread).
   double stepMean = 0.0, stepDeviation = 0.0;
+  // Mean time this rank spent in finishRound per group round (exchanges of every ladder of the
+  // group, normalisers, placement): replicated work, it grows with the total ladder count.
+  double finishMean = 0.0;
 };
 
 RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule, RoundTransport& transport,

@@ -80,28 +80,32 @@ TEST(RankIndependence, ReltImageIsTheSameOnOneTwoAndFourRanksWithBothPlacements)
 
 TEST(RankIndependence, ReltMovesChainsToTheFasterRankWithoutChangingTheImage) {
   // Rank 1 shares its core with two busy loops, so it steps at about a third of its speed: load
-  // balancing moves chains mid-render (states travel between the processes), and the image stays
-  // the one-rank image. (Which way they go depends on what else the machine runs meanwhile; the
-  // direction is checked in the unit tests of the pool.)
+  // balancing moves chains mid-render (single chains with spread placement, whole ladders with
+  // packed; states travel between the processes), and the image stays the one-rank image. (Which
+  // way they go depends on what else the machine runs meanwhile; the direction is checked in the
+  // unit tests of the pool.)
   if (std::thread::hardware_concurrency() < 2) GTEST_SKIP() << "needs two cores";
-  const std::string dir = makeTempDir("mpi-relt-balance");
-  const std::string amount = "--mutations-per-pixel 256 --ladders 4 --family relaxed --levels 5 --exchange permutation "
-                             "--exchange-interval 4 --balance-window 0.05";
-  const Image reference = renderWithRanks(1, "relt", dir, amount);
-  const std::string args = " render " + sourcePath("scenes/cornell-box.gltf") + " -o " + dir + "/uneven.exr --stats " +
-                           dir + "/uneven.json --integrator relt " + amount + " --width 40 --height 30 --seed 5";
-  const std::string slowRank =
-      "sh -c 'timeout 120 taskset -c 1 yes >/dev/null & a=$!; timeout 120 taskset -c 1 yes >/dev/null & b=$!; "
-      "taskset -c 1 " + reltBinary() + args + "; status=$?; kill $a $b; exit $status'";
-  const std::string launcher = mpirun(1);  // "... -np 1 ": rank 0 alone on core 0, then rank 1 (MPMD)
-  const CommandResult r =
-      runCommand(launcher.substr(0, launcher.find("-np")) + "--bind-to none -np 1 taskset -c 0 " + reltBinary() + args +
-                 " : -np 1 " + slowRank);
-  ASSERT_EQ(r.exitCode, 0) << r.output;
-  std::ifstream stats(dir + "/uneven.json");
-  const nlohmann::json j = nlohmann::json::parse(stats)["relt"];
-  EXPECT_GT(j["chain_moves"].get<int>(), 0);
-  expectSameImage(reference, readExr(dir + "/uneven.exr"));
+  for (const std::string placement : {"spread", "packed"}) {
+    const std::string dir = makeTempDir("mpi-relt-balance-" + placement);
+    const std::string amount = "--mutations-per-pixel 256 --ladders 8 --family relaxed --levels 5 --exchange permutation "
+                               "--exchange-interval 4 --balance-window 0.05 --placement " + placement;
+    const Image reference = renderWithRanks(1, "relt", dir, amount);
+    const std::string args = " render " + sourcePath("scenes/cornell-box.gltf") + " -o " + dir + "/uneven.exr --stats " +
+                             dir + "/uneven.json --integrator relt " + amount + " --width 40 --height 30 --seed 5";
+    const std::string slowRank =
+        "sh -c 'timeout 120 taskset -c 1 yes >/dev/null & a=$!; timeout 120 taskset -c 1 yes >/dev/null & b=$!; "
+        "taskset -c 1 " + reltBinary() + args + "; status=$?; kill $a $b; exit $status'";
+    const std::string launcher = mpirun(1);  // "... -np 1 ": rank 0 alone on core 0, then rank 1 (MPMD)
+    const CommandResult r =
+        runCommand(launcher.substr(0, launcher.find("-np")) + "--bind-to none -np 1 taskset -c 0 " + reltBinary() +
+                   args + " : -np 1 " + slowRank);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream stats(dir + "/uneven.json");
+    const nlohmann::json j = nlohmann::json::parse(stats)["relt"];
+    EXPECT_EQ(j["placement"], placement);
+    EXPECT_GT(j["chain_moves"].get<int>(), 0) << placement;
+    expectSameImage(reference, readExr(dir + "/uneven.exr"));
+  }
 }
 
 TEST(RankIndependence, ReltWithPopulationAnnealingIsTheSameOnOneAndTwoRanks) {

@@ -64,9 +64,11 @@ TEST(ReplicaPool, TwoSimulatedRanksGiveTheLevelsAndImageOfOne) {
         EXPECT_EQ(a.finishRound(g, messages, r), 2.0) << "the largest elapsed time";
         b.finishRound(g, messages, r);
       }
+      // Packed: each rank knows the levels of its own ladders only.
       for (int c = 0; c < one.chainCount(); ++c) {
-        ASSERT_EQ(one.levelOf(c), a.levelOf(c)) << "chain " << c << " round " << r;
-        ASSERT_EQ(one.levelOf(c), b.levelOf(c));
+        ASSERT_NE(a.hosts(c), b.hosts(c)) << "every chain on exactly one rank";
+        if (placement == Placement::Spread || a.hosts(c)) ASSERT_EQ(one.levelOf(c), a.levelOf(c)) << "chain " << c << " round " << r;
+        if (placement == Placement::Spread || b.hosts(c)) ASSERT_EQ(one.levelOf(c), b.levelOf(c));
       }
     }
     // Every ladder's levels are a permutation of 0..M-1.
@@ -88,53 +90,76 @@ TEST(ReplicaPool, TwoSimulatedRanksGiveTheLevelsAndImageOfOne) {
 TEST(ReplicaPool, ChainsMovedToAFasterRankContinueAsIfTheyHadStayed) {
   // Rank 1 reports three times rank 0's stepping time: chains move to rank 0 (a state exported,
   // imported, traced again), each group's after each of its first rounds (the first windows are
-  // short), then every 2 rounds (2 groups x 2 x 3 s >= the 10 s window). Levels, image and counters stay those of one rank.
-  Fixture fx;
-  fx.settings.ladders = 4;
-  fx.settings.balanceWindow = 10.0;
-  const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
-  ReplicaPool one(*fx.eval, fx.settings, 5, lum, 0, 1);
-  ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
-  std::vector<Film> f1(1, Film(16, 12)), fa(1, Film(16, 12)), fb(1, Film(16, 12));
-  for (uint64_t r = 0; r < 10; ++r) {
-    for (int g = 0; g < one.groups(); ++g) {
-      one.runRound(g, 4, f1);
-      one.finishRound(g, {one.roundMessage(g, 0.0, 1.0)}, r);
-      a.runRound(g, 4, fa);
-      b.runRound(g, 4, fb);
-      const std::vector<std::vector<double>> messages = {a.roundMessage(g, 0.0, 1.0), b.roundMessage(g, 0.0, 3.0)};
-      a.finishRound(g, messages, r);
-      b.finishRound(g, messages, r);
-      ASSERT_EQ(a.plannedMoves(), b.plannedMoves());
-      EXPECT_TRUE(one.plannedMoves().empty()) << "one rank never moves chains";
-      for (const ChainMove& m : a.plannedMoves()) {
-        ASSERT_EQ(m.from, 1);
-        ASSERT_EQ(a.groupOf(m.chain), g) << "only the finished group's chains move";
-        a.importChain(m.chain, b.exportChain(m.chain));
+  // short), then every 2 rounds (2 groups x 2 x 3 s >= the 10 s window). Spread moves single
+  // chains; packed moves whole ladders (8 ladders: two per group per rank, one can go). Levels,
+  // image and counters stay those of one rank.
+  for (Placement placement : {Placement::Spread, Placement::Packed}) {
+    Fixture fx;
+    fx.settings.ladders = placement == Placement::Packed ? 8 : 4;
+    fx.settings.placement = placement;
+    fx.settings.balanceWindow = 10.0;
+    const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+    ReplicaPool one(*fx.eval, fx.settings, 5, lum, 0, 1);
+    ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
+    std::vector<Film> f1(1, Film(16, 12)), fa(1, Film(16, 12)), fb(1, Film(16, 12));
+    for (uint64_t r = 0; r < 10; ++r) {
+      for (int g = 0; g < one.groups(); ++g) {
+        one.runRound(g, 4, f1);
+        one.finishRound(g, {one.roundMessage(g, 0.0, 1.0)}, r);
+        a.runRound(g, 4, fa);
+        b.runRound(g, 4, fb);
+        const std::vector<std::vector<double>> messages = {a.roundMessage(g, 0.0, 1.0), b.roundMessage(g, 0.0, 3.0)};
+        a.finishRound(g, messages, r);
+        b.finishRound(g, messages, r);
+        ASSERT_EQ(a.plannedMoves(), b.plannedMoves());
+        EXPECT_TRUE(one.plannedMoves().empty()) << "one rank never moves chains";
+        for (const ChainMove& m : a.plannedMoves()) {
+          ASSERT_EQ(m.from, 1);
+          ASSERT_EQ(a.groupOf(m.chain), g) << "only the finished group's chains move";
+          a.importChain(m.chain, b.exportChain(m.chain));
+        }
+        a.commitMoves();
+        b.commitMoves();
       }
-      a.commitMoves();
-      b.commitMoves();
+      for (int c = 0; c < one.chainCount(); ++c) {
+        const ReplicaPool& host = a.hosts(c) ? a : b;
+        ASSERT_EQ(one.levelOf(c), host.levelOf(c)) << "chain " << c;
+        if (placement == Placement::Packed)
+          ASSERT_EQ(host.hosts(c), host.hosts(c - c % 5)) << "a ladder stays whole";
+      }
     }
-    for (int c = 0; c < one.chainCount(); ++c) ASSERT_EQ(one.levelOf(c), a.levelOf(c)) << "chain " << c;
+    EXPECT_GT(a.chainMoves(), 0u) << placementName(placement);
+    EXPECT_EQ(a.hostedCount(0) + a.hostedCount(1), one.chainCount());
+    EXPECT_GE(a.hostedCount(0), 2 * a.hostedCount(1)) << "rank 0 is three times as fast";
+    EXPECT_EQ(a.hostedCount(0), b.hostedCount(0));
+    const double s1 = sum(f1), s2 = sum(fa) + sum(fb);
+    EXPECT_NEAR(s1, s2, 1e-9 * s1);
+    uint64_t m1 = 0, m2 = 0, acc1 = 0, acc2 = 0;
+    auto count = [](const ReplicaPool& p, uint64_t& proposed, uint64_t& accepted) {
+      for (const LevelCounters& c : p.hostedCounters()) {
+        proposed += c.smallProposed + c.largeProposed;
+        accepted += c.smallAccepted + c.largeAccepted;
+      }
+    };
+    count(one, m1, acc1);
+    count(a, m2, acc2);
+    count(b, m2, acc2);
+    EXPECT_EQ(m1, m2);
+    EXPECT_EQ(acc1, acc2) << "moved chains take the same decisions";
+    if (placement == Placement::Packed) {
+      EXPECT_EQ(one.roundTrips().total(), a.roundTrips().total() + b.roundTrips().total())
+          << "round trips counted by each ladder's host, the trip's phase travelling with the chain";
+      EXPECT_EQ(one.tally().rounds, a.tally().rounds + b.tally().rounds);
+    }
   }
-  EXPECT_GT(a.chainMoves(), 0u);
-  EXPECT_EQ(a.hostedCount(0) + a.hostedCount(1), one.chainCount());
-  EXPECT_GE(a.hostedCount(0), 2 * a.hostedCount(1)) << "rank 0 is three times as fast";
-  EXPECT_EQ(a.hostedCount(0), b.hostedCount(0));
-  const double s1 = sum(f1), s2 = sum(fa) + sum(fb);
-  EXPECT_NEAR(s1, s2, 1e-9 * s1);
-  uint64_t m1 = 0, m2 = 0, acc1 = 0, acc2 = 0;
-  auto count = [](const ReplicaPool& p, uint64_t& proposed, uint64_t& accepted) {
-    for (const LevelCounters& c : p.hostedCounters()) {
-      proposed += c.smallProposed + c.largeProposed;
-      accepted += c.smallAccepted + c.largeAccepted;
-    }
-  };
-  count(one, m1, acc1);
-  count(a, m2, acc2);
-  count(b, m2, acc2);
-  EXPECT_EQ(m1, m2);
-  EXPECT_EQ(acc1, acc2) << "moved chains take the same decisions";
+}
+
+TEST(ReplicaPool, AutoPlacementPacksWhenEveryRankCanHoldTwoLadders) {
+  EXPECT_EQ(resolvePlacement(Placement::Auto, 32, 16), Placement::Packed);
+  EXPECT_EQ(resolvePlacement(Placement::Auto, 32, 17), Placement::Spread);
+  EXPECT_EQ(resolvePlacement(Placement::Auto, 1, 1), Placement::Spread);
+  EXPECT_EQ(resolvePlacement(Placement::Spread, 64, 2), Placement::Spread);
+  EXPECT_EQ(resolvePlacement(Placement::Packed, 2, 8), Placement::Packed);
 }
 
 TEST(ReplicaPool, ADarkSceneRunsNoChains) {
