@@ -48,7 +48,7 @@ void addReplicaOptions(CLI::App& cmd, Options& o) {
            ->capture_default_str());
   only(cmd.add_option("--placement", o.placement,
                       "relt: chains over ranks (spread: chain c on rank c mod P; packed: whole ladders, exchanges decided "
-                      "locally; auto: packed when ladders >= 2 x ranks)")
+                      "locally; auto: packed above 8 ranks when ladders >= 2 x ranks)")
            ->check(CLI::IsMember({"auto", "spread", "packed"}))
            ->capture_default_str());
   only(cmd.add_option("--balance-window", r.balanceWindow,

@@ -118,7 +118,7 @@ nlohmann::json reltStats(const mpi::ReltOutcome& o) {
   j["placement"] = placementName(o.placement);
   j["chain_moves"] = o.chainMoves;
   j["chains_per_rank"] = o.chainsPerRank;
-  j["groups"] = std::min(2, o.ladders);
+  j["groups"] = roundGroups(o.ladders);
   j["group_round_step_seconds_mean_per_rank"] = o.stepMean;
   j["group_round_step_seconds_deviation_per_rank"] = o.stepDeviation;
   j["group_round_finish_seconds_mean_per_rank"] = o.finishMean;

@@ -56,7 +56,7 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   }
   bootstrapCount_ = double(samples);
   largeSum_.assign(size_t(m), 0.0);
-  pendingLarge_.assign(size_t(std::min(2, std::max(1, settings.ladders))), LargeStepSums(m));  // defines groups()
+  pendingLarge_.assign(size_t(roundGroups(settings.ladders)), LargeStepSums(m));  // defines groups()
   messageEpoch_.assign(size_t(groups()), 0);
   windowSeconds_.assign(size_t(groups()), std::vector<double>(size_t(ranks), 0.0));
   balanceDecisions_.assign(size_t(groups()), 0);

@@ -1,7 +1,7 @@
 #pragma once
 // Replica exchange light transport (`relt`): C = L ladders x M levels chains, chain c in ladder
-// c / M starting at level c mod M. The ladders form two groups (even and odd ladders; one group if
-// L = 1) whose rounds the render loop staggers (RoundLoop). A rank hosts some chains (placement),
+// c / M starting at level c mod M. The ladders form up to kRoundGroups groups (ladder l in group
+// l mod G) whose rounds the render loop staggers (RoundLoop). A rank hosts some chains (placement),
 // steps a group's chains for a round, and contributes one message to that group's collective: the
 // chains' targets under every level, its large-step sums, its stepping time and its elapsed time.
 // From all messages every rank runs the same exchange per ladder of the group (a per-ladder stream

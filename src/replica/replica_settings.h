@@ -11,8 +11,8 @@ namespace relt {
 
 enum class Placement : uint8_t {
   Spread,  // chain c on rank c mod P: ladders span ranks; every rank decides every ladder's exchange
-  Packed,  // ladders 2j and 2j + 1 on rank j mod P: whole ladders per rank, exchanges decided locally
-  Auto,    // packed when every rank can hold a ladder of each round group, else spread
+  Packed,  // ladders G j .. G j + G - 1 on rank j mod P: whole ladders per rank, exchanges decided locally
+  Auto,    // packed beyond 8 ranks when every rank can hold a ladder of each round group, else spread
 };
 
 inline std::optional<Placement> parsePlacement(std::string_view name) {
@@ -25,18 +25,24 @@ inline const char* placementName(Placement placement) {
   return placement == Placement::Spread ? "spread" : placement == Placement::Packed ? "packed" : "auto";
 }
 
-// Packed placement keeps each round's work per rank independent of the rank count (no ladder's
-// targets travel, no rank decides another's exchanges: docs/SCALING.md); it needs two ladders per
-// rank so that each rank steps in both round groups.
+// Spread replicates every exchange decision and every target on every rank, about 0.1 % of the
+// stepping time per rank (docs/SCALING.md): negligible on a few ranks, where moving single chains
+// balances load more finely than whole ladders. Packed keeps a rank's work per round independent
+// of the rank count; it needs two ladders per rank so that each rank steps in both round groups.
+// The render loop staggers the ladders' rounds in this many groups (ladder l in group l mod G):
+// a rank waits for a group's collective only after stepping the G - 1 others (docs/SCALING.md).
+constexpr int kRoundGroups = 2;
+inline int roundGroups(int ladders) { return ladders < 1 ? 1 : ladders < kRoundGroups ? ladders : kRoundGroups; }
+
 inline Placement resolvePlacement(Placement placement, int ladders, int ranks) {
   if (placement != Placement::Auto) return placement;
-  return ladders >= 2 * ranks ? Placement::Packed : Placement::Spread;
+  return ranks > 8 && ladders >= kRoundGroups * ranks ? Placement::Packed : Placement::Spread;
 }
 
-// The rank that hosts chain c (ladder c / levels). Packed keeps an even and an odd ladder together,
-// so every rank steps chains in both staggered round groups (even and odd ladders).
+// The rank that hosts chain c (ladder c / levels). Packed keeps runs of kRoundGroups consecutive
+// ladders together, so every rank steps chains in every staggered round group.
 inline int chainRank(int chain, int levels, int ranks, Placement placement) {
-  return placement == Placement::Spread ? chain % ranks : (chain / levels / 2) % ranks;
+  return placement == Placement::Spread ? chain % ranks : (chain / levels / kRoundGroups) % ranks;
 }
 
 // How chains get their first states (DESIGN §3.4).

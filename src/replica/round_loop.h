@@ -1,9 +1,10 @@
 #pragma once
 // The order of a replica render's rounds, shared by the MPI driver and the in-process renderer.
-// The ladders form two groups whose rounds are staggered by half a round: a rank steps group 0,
-// starts its collective, steps group 1, starts that one, and only then waits for group 0's. A rank
-// therefore waits only when another is more than half a round behind, not at every round's
-// slowest rank, and the collective's latency hides behind the other group's work. Every group still
+// The ladders form G groups (kRoundGroups, fewer with fewer ladders) whose rounds are staggered: a
+// rank steps group 0 and starts its collective, steps groups 1 .. G-1 likewise, and only then
+// waits for group 0's. A rank therefore waits only when another is more than (G-1)/G of a round
+// behind, not at every round's slowest rank, and the collective's latency hides behind the other
+// groups' work. Every group still
 // takes the same steps per round; exchanges, normalisers and placement follow the same fixed order
 // on every rank, so the image does not depend on timing or rank count.
 #include <cstdint>

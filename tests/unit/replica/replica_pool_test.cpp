@@ -154,9 +154,10 @@ TEST(ReplicaPool, ChainsMovedToAFasterRankContinueAsIfTheyHadStayed) {
   }
 }
 
-TEST(ReplicaPool, AutoPlacementPacksWhenEveryRankCanHoldTwoLadders) {
+TEST(ReplicaPool, AutoPlacementPacksBeyondEightRanksWhenEveryRankCanHoldTwoLadders) {
   EXPECT_EQ(resolvePlacement(Placement::Auto, 32, 16), Placement::Packed);
   EXPECT_EQ(resolvePlacement(Placement::Auto, 32, 17), Placement::Spread);
+  EXPECT_EQ(resolvePlacement(Placement::Auto, 32, 8), Placement::Spread);
   EXPECT_EQ(resolvePlacement(Placement::Auto, 1, 1), Placement::Spread);
   EXPECT_EQ(resolvePlacement(Placement::Spread, 64, 2), Placement::Spread);
   EXPECT_EQ(resolvePlacement(Placement::Packed, 2, 8), Placement::Packed);
