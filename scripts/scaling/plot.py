@@ -1,7 +1,8 @@
 """Plots of a scaling CSV (scripts/scaling/*.sh): python3 plot.py CSV strong|weak|sweep OUT.png.
 
 strong, weak: round-loop time, parallel efficiency (strong: T1 / (P TP), weak: T1 / TP) and the
-share of the loop inside collectives, against ranks; oversubscribed points are hollow.
+share of the loop inside collectives, against ranks (median run of each rank count); oversubscribed
+points are hollow.
 sweep: time and collective share against the exchange interval, one line per placement.
 """
 import csv
@@ -17,6 +18,11 @@ rows = list(csv.DictReader(open(path)))
 fig, axes = plt.subplots(1, 3 if kind != "sweep" else 2, figsize=(12 if kind != "sweep" else 8, 3.6))
 
 if kind in ("strong", "weak"):
+    # Median over repeated runs of each rank count.
+    by = {}
+    for r in rows:
+        by.setdefault(int(r["ranks"]), []).append(r)
+    rows = [sorted(v, key=lambda r: float(r["loop_seconds"]))[len(v) // 2] for _, v in sorted(by.items())]
     ranks = [int(r["ranks"]) for r in rows]
     time = [float(r["loop_seconds"]) for r in rows]
     share = [100 * float(r["collective_share_max"]) for r in rows]

@@ -12,6 +12,6 @@ mean = r["group_round_step_seconds_mean_per_rank"]
 dev = r["group_round_step_seconds_deviation_per_rank"]
 cv = max(d / m for d, m in zip(dev, mean) if m > 0) if any(m > 0 for m in mean) else 0.0
 print(",".join(str(x) for x in [
-    experiment, j["ranks"], int(j["ranks"] > cores), s["exchange_interval"], s["placement"], s["ladders"],
+    experiment, j["ranks"], int(j["ranks"] > cores), s["exchange_interval"], r["placement"], s["ladders"],
     j["mutations"], round(loop, 4), round(max(coll) / loop, 5), round(sum(coll) / len(coll) / loop, 5),
     round(sum(mean) / len(mean), 7), round(cv, 4), r["chain_moves"]]))
