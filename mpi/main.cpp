@@ -250,8 +250,8 @@ int main(int argc, char** argv) {
       throw relt::InputError("", "--kelemen-weights", "only for pssmlt");
     if (o.render.integrator != relt::Integrator::Erpt && (o.render.erptMaxConsecutive > 0 || o.render.erptProposalFilter))
       throw relt::InputError("", "--erpt-max-consecutive/--erpt-proposal-filter", "only for erpt");
-    if (!chains && o.render.snapshotEvery > 0.0)
-      throw relt::InputError("", "--snapshot-every", "only for the Markov-chain integrators (pssmlt, mmlt, relt)");
+    if (o.render.integrator == relt::Integrator::Erpt && o.render.snapshotEvery > 0.0)
+      throw relt::InputError("", "--snapshot-every", "not available for erpt");
     checkReplicaOptions(o);
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
     relt::mpi::runRender(session, o.render);

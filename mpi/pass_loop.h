@@ -11,9 +11,11 @@ namespace relt::mpi {
 
 // Calls renderUnit(pass, row) for every owned unit of every pass and returns the number of passes.
 // If rate is given, the root prints a progress line at most once a second with rate(elapsed)
-// samples per second.
+// samples per second. If snapshot is given and --snapshot-every is set, every rank calls
+// snapshot(passes so far) after the same passes (the elapsed time is agreed every pass).
 int runPasses(const Session& session, const RenderSettings& settings,
               const std::function<void(uint64_t pass, int row)>& renderUnit,
-              const std::function<double(double elapsed)>& rate = {});
+              const std::function<double(double elapsed)>& rate = {},
+              const std::function<void(int passes)>& snapshot = {});
 
 }  // namespace relt::mpi

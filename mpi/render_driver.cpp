@@ -263,9 +263,16 @@ void runRender(const Session& session, RenderSettings settings) {
     return;
   }
   const auto renderStart = Clock::now();
+  int snapshots = 0;
   const int passes = runPasses(
       session, settings, [&](uint64_t pass, int row) { renderer.renderRow(pass, row, film); },
-      [&](double elapsed) { return double(renderer.samples()) * session.size() / std::max(elapsed, 1e-9); });
+      [&](double elapsed) { return double(renderer.samples()) * session.size() / std::max(elapsed, 1e-9); },
+      [&](int done) {
+        std::vector<double> sums = film.data();
+        reduceSumToRoot(sums);
+        if (session.isRoot()) writeImages(settings, Renderer::resolve(film, sums, done));
+        ++snapshots;
+      });
   const uint64_t samples = allreduceSum(renderer.samples());
   const Gathered g = gatherAfterRender(renderStart, renderer, film);
   if (!session.isRoot()) return;
@@ -273,6 +280,7 @@ void runRender(const Session& session, RenderSettings settings) {
   const Image image = Renderer::resolve(film, film.data(), passes);
   nlohmann::json j = commonStats(settings, session, g, image);
   j["spp"] = passes;
+  j["snapshots"] = snapshots;
   j["samples"] = samples;
   j["samples_per_second"] = samples / std::max(g.renderSeconds, 1e-9);
   j["samples_per_second_per_rank"] = samples / std::max(g.renderSeconds, 1e-9) / session.size();

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Equal-time error of pssmlt and relt configurations on 2 ranks, with convergence curves: each run
 # writes snapshots every SNAP seconds, copied as they appear, and every copy is compared with the
-# reference (relt compare). References are the long bdpt renders of equal_time.sh
-# (out/bench/equal-time/<scene>-reference.exr); missing ones are rendered for REF_SECONDS.
+# reference (relt compare). References: scenes/references/<scene>.exr (scripts/bench/reference.sh),
+# else the long bdpt renders of equal_time.sh (out/bench/equal-time/<scene>-reference.exr); missing
+# ones are rendered for REF_SECONDS.
 # Writes out/bench/relt_equal_time.md (final RMSE table), out/bench/relt-curves/<scene>.csv and
 # <scene>.png (RMSE against time), and each run's final PNG. Each run keeps its own curve and table
 # row, so a rerun of some configurations (CONFIGS) updates them and keeps the others' results.
@@ -10,6 +11,7 @@
 #        env: SNAP (default 5), REF_SECONDS (default 600), CONFIGS (names, default all)
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
+source "$ROOT/scripts/bench/snapshots.sh"
 BUDGET="${1:-60}"
 shift $(($# > 0 ? 1 : 0))
 SCENES=("$@")
@@ -41,41 +43,17 @@ TABLE="$ROOT/out/bench/relt_equal_time.md"
   echo "|---|---|---|---|---|---|---|"
 } > "$TABLE"
 
-compare() {  # image reference -> "rmse relmse"
-  "$BUILD_DIR/relt" compare "$1" "$2" | /usr/bin/python3 -c "import json,sys; c=json.load(sys.stdin); print(c['rmse'], c['rel_mse'])"
-}
-
 for scene in "${SCENES[@]}"; do
-  ref="$REF_DIR/$scene-reference.exr"
+  ref="$ROOT/scenes/references/$scene.exr"  # scripts/bench/reference.sh; else a reference of its own
+  [ -f "$ref" ] || ref="$REF_DIR/$scene-reference.exr"
   [ -f "$ref" ] || "${MPIRUN[@]}" -np 2 "$BUILD_DIR/relt" render "$ROOT/scenes/$scene.gltf" -o "$ref" \
     --integrator bdpt --time "$REF_SECONDS" --seed 99 2>/dev/null
   csv="$OUT/$scene.csv"
   for name in "${NAMES[@]}"; do
     run="$OUT/$scene-$name"
-    rm -rf "$run.snaps" && mkdir -p "$run.snaps"
     # shellcheck disable=SC2086
-    "${MPIRUN[@]}" -np 2 "$BUILD_DIR/relt" render "$ROOT/scenes/$scene.gltf" -o "$run.exr" --png "$run.png" \
-      --stats "$run.json" --time "$BUDGET" --snapshot-every "$SNAP" --seed 1 ${ARGS[$name]} 2>/dev/null &
-    pid=$!
-    start=$(date +%s.%N)
-    last=""
-    while kill -0 "$pid" 2>/dev/null; do
-      if [ -f "$run.exr" ]; then
-        stamp=$(stat -c %y "$run.exr")
-        if [ "$stamp" != "$last" ]; then
-          last=$stamp
-          cp "$run.exr" "$run.snaps/$(awk -v s="$start" -v n="$(date +%s.%N)" 'BEGIN {printf "%08.2f", n - s}').exr"
-        fi
-      fi
-      sleep 0.2
-    done
-    wait "$pid"
-    : > "$run.csv"
-    for snap in "$run.snaps"/*.exr; do
-      t=$(basename "$snap" .exr)
-      read -r rmse rel < <(compare "$snap" "$ref")
-      echo "$name,$t,$rmse,$rel" >> "$run.csv"
-    done
+    render_followed "$run" "$scene" "$BUDGET" "$SNAP" ${ARGS[$name]}
+    curve "$run" "$ref" "$name"
     read -r rmse rel < <(compare "$run.exr" "$ref")
     /usr/bin/python3 - "$run.json" "$scene" "$name" "$rmse" "$rel" > "$run.row" <<'PY'
 import json, sys
@@ -93,19 +71,6 @@ PY
     [ -f "$OUT/$scene-$name.csv" ] && cat "$OUT/$scene-$name.csv" >> "$csv"
     [ -f "$OUT/$scene-$name.row" ] && cat "$OUT/$scene-$name.row" >> "$TABLE"
   done
-  /usr/bin/python3 - "$csv" "$OUT/$scene.png" "$scene" <<'PY'
-import csv, sys
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-rows = list(csv.DictReader(open(sys.argv[1])))
-fig, ax = plt.subplots(figsize=(6, 4))
-for name in dict.fromkeys(r["configuration"] for r in rows):
-    pts = sorted((float(r["seconds"]), float(r["rmse"])) for r in rows if r["configuration"] == name)
-    ax.plot([p[0] for p in pts], [p[1] for p in pts], marker=".", label=name)
-ax.set_xscale("log"); ax.set_yscale("log")
-ax.set_xlabel("seconds (2 ranks)"); ax.set_ylabel("RMSE vs reference"); ax.set_title(sys.argv[3])
-ax.legend(fontsize=8); fig.tight_layout(); fig.savefig(sys.argv[2], dpi=110)
-PY
+  plot_curves "$csv" "$OUT/$scene.png" "$scene"
 done
 cat "$TABLE"

@@ -1,5 +1,5 @@
-// --snapshot-every: while a Markov-chain render runs, the output file already holds a valid image
-// of the render so far (written atomically), close to the final one.
+// --snapshot-every: while a render runs (Markov chains or the per-pixel pass loop), the output file
+// already holds a valid image of the render so far (written atomically), close to the final one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,5 +37,5 @@ TEST_P(Snapshot, MidRenderImageIsAValidExrCloseToTheFinalOne) {
   EXPECT_NEAR(snapshot.mean(), final.mean(), 0.1 * final.mean());
 }
 
-INSTANTIATE_TEST_SUITE_P(MarkovChains, Snapshot, ::testing::Values("pssmlt", "relt"),
+INSTANTIATE_TEST_SUITE_P(Integrators, Snapshot, ::testing::Values("pssmlt", "relt", "pt", "bdpt"),
                          [](const auto& info) { return info.param; });
