@@ -31,6 +31,10 @@ render_followed() {
     sleep 0.2
   done
   wait "$pid"
+  # No snapshot seen (erpt, or a render shorter than the polling): the final image is the one point.
+  if [ -z "$(ls -A "$run.snaps")" ] && [ -f "$run.exr" ]; then
+    cp "$run.exr" "$run.snaps/$(awk -v s="$start" -v n="$(date +%s.%N)" 'BEGIN {printf "%08.2f", n - s}').exr"
+  fi
 }
 
 # curve RUN REFERENCE NAME: RUN.csv, one line "NAME,seconds,rmse,rel_mse" per snapshot.
