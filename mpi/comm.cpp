@@ -96,24 +96,6 @@ std::vector<std::string> processorNames() {
   return out;
 }
 
-std::vector<std::vector<double>> allgatherv(const std::vector<double>& mine, const std::vector<size_t>& lengths) {
-  std::vector<int> counts(lengths.size()), offsets(lengths.size());
-  int total = 0;
-  for (size_t r = 0; r < lengths.size(); ++r) {
-    counts[r] = static_cast<int>(lengths[r]);
-    offsets[r] = total;
-    total += counts[r];
-  }
-  std::vector<double> all(static_cast<size_t>(total));
-  timed([&] {
-    MPI_Allgatherv(mine.data(), static_cast<int>(mine.size()), MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
-                   MPI_DOUBLE, MPI_COMM_WORLD);
-  });
-  std::vector<std::vector<double>> out(lengths.size());
-  for (size_t r = 0; r < lengths.size(); ++r)
-    out[r].assign(all.begin() + offsets[r], all.begin() + offsets[r] + counts[r]);
-  return out;
-}
 }  // namespace relt::mpi
 
 namespace relt::mpi {

@@ -40,9 +40,6 @@ namespace relt::mpi {
 std::vector<double> allgather(double value);
 // Every rank's processor (host) name, in rank order, on every rank.
 std::vector<std::string> processorNames();
-// Every rank's buffer, in rank order, on every rank; lengths[r] is rank r's buffer length (known
-// to all in advance, so one MPI_Allgatherv suffices).
-std::vector<std::vector<double>> allgatherv(const std::vector<double>& mine, const std::vector<size_t>& lengths);
 }  // namespace relt::mpi
 
 namespace relt::mpi {
@@ -57,8 +54,9 @@ std::vector<std::vector<uint64_t>> transfer(const std::vector<Payload>& sends, c
 }  // namespace relt::mpi
 
 namespace relt::mpi {
-// A nonblocking MPI_Iallgatherv: started by the constructor, completed by wait() (the time in wait
-// counts as collective time). Not movable: MPI holds the buffers until then.
+// Every rank's buffer, in rank order, on every rank, by a nonblocking MPI_Iallgatherv: started by
+// the constructor, completed by wait() (the time in wait counts as collective time); lengths[r] is
+// rank r's buffer length, known to all in advance. Not movable: MPI holds the buffers until then.
 class PendingAllgatherv {
  public:
   PendingAllgatherv(std::vector<double> mine, const std::vector<size_t>& lengths);

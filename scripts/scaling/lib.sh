@@ -19,3 +19,10 @@ run_point() {
 csv_header() {
   echo "experiment,ranks,oversubscribed,interval,placement,ladders,mutations,loop_seconds,collective_share_max,collective_share_mean,step_mean_seconds,step_cv,chain_moves" > "$1"
 }
+
+# publish KIND: plots out/scaling/KIND.csv into docs/img/scaling-KIND.png, copies the CSV beside it.
+publish() {
+  /usr/bin/python3 "$ROOT/scripts/scaling/plot.py" "$OUT/$1.csv" "$1" "$ROOT/docs/img/scaling-$1.png"
+  cp "$OUT/$1.csv" "$ROOT/docs/img/scaling-$1.csv"
+  cat "$OUT/$1.csv"
+}

@@ -12,10 +12,8 @@ RANKS=("$@")
 CSV="$OUT/strong.csv"
 csv_header "$CSV"
 for _ in $(seq "${REPEATS:-3}"); do
-for p in "${RANKS[@]}"; do
-  run_point "$CSV" strong "$p" --mutations-per-pixel "$MPP" --ladders "${LADDERS:-64}"
+  for p in "${RANKS[@]}"; do
+    run_point "$CSV" strong "$p" --mutations-per-pixel "$MPP" --ladders "${LADDERS:-64}"
+  done
 done
-done
-/usr/bin/python3 "$ROOT/scripts/scaling/plot.py" "$CSV" strong "$ROOT/docs/img/scaling-strong.png"
-cp "$CSV" "$ROOT/docs/img/scaling-strong.csv"
-cat "$CSV"
+publish strong

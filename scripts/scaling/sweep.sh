@@ -15,6 +15,4 @@ for placement in spread packed; do
     run_point "$CSV" sweep "$P" --mutations-per-pixel "$MPP" --exchange-interval "$k" --placement "$placement"
   done
 done
-/usr/bin/python3 "$ROOT/scripts/scaling/plot.py" "$CSV" sweep "$ROOT/docs/img/scaling-sweep.png"
-cp "$CSV" "$ROOT/docs/img/scaling-sweep.csv"
-cat "$CSV"
+publish sweep

@@ -12,10 +12,8 @@ RANKS=("$@")
 CSV="$OUT/weak.csv"
 csv_header "$CSV"
 for _ in $(seq "${REPEATS:-3}"); do
-for p in "${RANKS[@]}"; do
-  run_point "$CSV" weak "$p" --mutations-per-pixel $((MPP * p)) --ladders $((32 * p))
+  for p in "${RANKS[@]}"; do
+    run_point "$CSV" weak "$p" --mutations-per-pixel $((MPP * p)) --ladders $((32 * p))
+  done
 done
-done
-/usr/bin/python3 "$ROOT/scripts/scaling/plot.py" "$CSV" weak "$ROOT/docs/img/scaling-weak.png"
-cp "$CSV" "$ROOT/docs/img/scaling-weak.csv"
-cat "$CSV"
+publish weak

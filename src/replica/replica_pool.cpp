@@ -169,33 +169,37 @@ double ReplicaPool::finishRound(int group, const std::vector<std::vector<double>
   }
   if (!active_) return elapsed;
 
-  // The group's chains' targets, by global id (with local decisions the hosted ones, read from the
-  // chains), and the large-step sums (dropped when the regularisation moved after they were taken).
+  // The group's chains' targets: from the messages by global id, or with local decisions from the
+  // hosted chains themselves (no work that grows with the rank count). Then the large-step sums
+  // (dropped when the regularisation moved after they were taken).
   const bool current = messageEpoch_[size_t(group)] == epoch_;
-  std::vector<const double*> targetsOf(size_t(chainCount()), nullptr);
-  if (localDecisions())
-    for (size_t i = 0; i < chains_.size(); ++i) targetsOf[size_t(hosted()[i])] = chains_[i].targets();
+  std::vector<const double*> targetsOf;
+  if (!localDecisions()) targetsOf.assign(size_t(chainCount()), nullptr);
   for (int r = 0; r < int(messages.size()); ++r) {
     const double* msg = messages[size_t(r)].data();
-    for (int c : hostedByRank_[size_t(r)]) {
-      if (localDecisions() || groupOf(c) != group) continue;
-      targetsOf[size_t(c)] = msg;
-      msg += m;
-    }
+    if (!localDecisions())
+      for (int c : hostedByRank_[size_t(r)]) {
+        if (groupOf(c) != group) continue;
+        targetsOf[size_t(c)] = msg;
+        msg += m;
+      }
     if (!current) continue;
     for (int k = 0; k < m; ++k) largeSum_[size_t(k)] += msg[k];
     largeCount_ += msg[m];
   }
+  auto targets = [&](int c) {
+    return localDecisions() ? chains_[size_t(localIndex_[size_t(c)])].targets() : targetsOf[size_t(c)];
+  };
 
-  // Each of the group's ladders: Q(i, j) = q_i(state held by level j), one exchange, new labels.
+  // Each ladder of the group this rank decides: Q(i, j) = q_i(state held by level j), one exchange,
+  // new labels.
   std::vector<int> holder(static_cast<size_t>(m));
-  for (int ladder = group; ladder < settings_.ladders; ladder += groups()) {
+  auto exchange = [&](int ladder) {
     const int first = ladder * m;
-    if (localDecisions() && localIndex_[size_t(first)] < 0) continue;  // another rank's ladder
     for (int c = first; c < first + m; ++c) holder[size_t(levelOf_[size_t(c)])] = c;
     TargetMatrix q(m);
     for (int i = 0; i < m; ++i)
-      for (int j = 0; j < m; ++j) q(i, j) = targetsOf[size_t(holder[size_t(j)])][i];
+      for (int j = 0; j < m; ++j) q(i, j) = targets(holder[size_t(j)])[i];
     Rng rng(hashKey(seed_, kExchangePurpose, uint64_t(ladder), round));
     const std::vector<int> from = exchangeLevels(settings_.exchange, q, round, rng, &tally_);
     for (int i = 0; i < m; ++i) {
@@ -203,6 +207,12 @@ double ReplicaPool::finishRound(int group, const std::vector<std::vector<double>
       levelOf_[size_t(c)] = i;
       trips_.visit(c, i);
     }
+  };
+  if (localDecisions()) {
+    for (int c : hosted())  // whole ladders: each named by its first chain
+      if (c % m == 0 && groupOf(c) == group) exchange(c / m);
+  } else {
+    for (int ladder = group; ladder < settings_.ladders; ladder += groups()) exchange(ladder);
   }
   for (size_t i = 0; i < chains_.size(); ++i) chains_[i].setLevel(levelOf_[size_t(hosted()[i])]);
 

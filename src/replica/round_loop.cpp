@@ -17,11 +17,13 @@ struct Stepper {
   const RoundLoopHooks& hooks;
   double steppings = 0.0, sum = 0.0, sumSquares = 0.0;  // per-group-round stepping times
   double finishes = 0.0, finishSum = 0.0;                // time in finishRound
+  std::vector<std::vector<size_t>> lengths = {};         // per group, every rank's message length
 
-  std::vector<size_t> lengths(int group) const {
-    std::vector<size_t> out;
-    for (int r = 0; r < pool.rankCount(); ++r) out.push_back(pool.messageLength(group, r));
-    return out;
+  // Message lengths change only when chains move.
+  void measureLengths() {
+    lengths.assign(size_t(pool.groups()), {});
+    for (int g = 0; g < pool.groups(); ++g)
+      for (int r = 0; r < pool.rankCount(); ++r) lengths[size_t(g)].push_back(pool.messageLength(g, r));
   }
 
   // Steps a group's chains for round `round` and starts its collective.
@@ -32,7 +34,7 @@ struct Stepper {
     steppings += 1.0;
     sum += seconds;
     sumSquares += seconds * seconds;
-    transport.post(group, pool.roundMessage(group, hooks.elapsed(), seconds), lengths(group));
+    transport.post(group, pool.roundMessage(group, hooks.elapsed(), seconds), lengths[size_t(group)]);
   }
   // Completes a group's collective for round `round`: exchanges, normalisers, chain moves.
   double finish(int group, uint64_t round) {
@@ -41,7 +43,10 @@ struct Stepper {
     const double elapsed = pool.finishRound(group, messages, round);
     finishes += 1.0;
     finishSum += std::chrono::duration<double>(Clock::now() - t0).count();
-    if (!pool.plannedMoves().empty()) transport.migrate(pool);
+    if (!pool.plannedMoves().empty()) {
+      transport.migrate(pool);
+      measureLengths();
+    }
     return elapsed;
   }
 };
@@ -53,6 +58,7 @@ RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule,
   RoundLoopResult out;
   if (!pool.active() || !schedule.anotherRound(0, 0.0, 0.0)) return out;
   Stepper s{pool, schedule, transport, films, hooks};
+  s.measureLengths();
   const int groups = pool.groups();
   for (int g = 0; g < groups; ++g) s.stepAndPost(g, 0);
   double lastRound = 0.0;
