@@ -261,16 +261,20 @@ std::vector<uint64_t> ReplicaPool::exportChain(int chain) {
   const size_t i = size_t(localIndex_[size_t(chain)]);
   for (int k = 0; k < levels(); ++k) departed_[size_t(k)].add(chains_[i].counters()[size_t(k)]);
   std::vector<uint64_t> state = chains_[i].serialize();
+  // A chain of a group that has not run since the regularisation moved still owes its evaluation
+  // under the new targets (which draws from its stream): it owes it on arrival too.
+  state.push_back(epochOf_[size_t(chain)] == epoch_ ? 0 : 1);
   state.push_back(trips_.phase(chain));  // only the host tracks it with local decisions
   return state;
 }
 
 void ReplicaPool::importChain(int chain, const std::vector<uint64_t>& state) {
-  if (state.empty()) throw std::runtime_error("empty replica-chain state");
-  imported_.emplace_back(chain, ReplicaChain(std::vector<uint64_t>(state.begin(), state.end() - 1), family_, evaluator_));
+  if (state.size() < 2) throw std::runtime_error("truncated replica-chain state");
+  imported_.emplace_back(chain, ReplicaChain(std::vector<uint64_t>(state.begin(), state.end() - 2), family_, evaluator_));
   trips_.setPhase(chain, uint8_t(state.back()));
   levelOf_[size_t(chain)] = imported_.back().second.level();
-  epochOf_[size_t(chain)] = epoch_;  // traced again under today's targets
+  const bool owesRefresh = state[state.size() - 2] != 0;
+  epochOf_[size_t(chain)] = owesRefresh ? epoch_ - 1 : epoch_;  // a refresh owed is a stale epoch
 }
 
 void ReplicaPool::commitMoves() {

@@ -170,3 +170,51 @@ TEST(ReplicaPool, ADarkSceneRunsNoChains) {
   EXPECT_FALSE(pool.active());
   EXPECT_EQ(pool.messageLength(0, 0), 3u);
 }
+
+// The round loop's order (group 0 steps a round before the other groups finish theirs) with a
+// regularisation that moves the tempered targets: a chain can move while its state still waits to
+// be evaluated under the new targets, and must then be evaluated on arrival exactly as it would
+// have been at home.
+TEST(ReplicaPool, ChainsMovedBeforeARegularisationRefreshContinueAsIfTheyHadStayed) {
+  Fixture fx;
+  fx.settings.ladders = 4;
+  fx.settings.family.kind = FamilyKind::Tempered;
+  fx.settings.family.levels = 4;
+  fx.settings.family.regularisation = 0.05;
+  fx.settings.family.regularisationDecay = 0.2;
+  fx.settings.balanceWindow = 10.0;
+  const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+  ReplicaPool one(*fx.eval, fx.settings, 5, lum, 0, 1);
+  ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
+  ASSERT_EQ(one.groups(), 2);
+  std::vector<Film> f1(1, Film(16, 12)), fa(1, Film(16, 12)), fb(1, Film(16, 12));
+  std::vector<std::vector<std::vector<double>>> posted1(2), posted2(2);
+  auto stepAndPost = [&](int g) {  // as the loop does: a group's message right after its steps
+    one.runRound(g, 4, f1);
+    a.runRound(g, 4, fa);
+    b.runRound(g, 4, fb);
+    posted1[size_t(g)] = {one.roundMessage(g, 0.0, 1.0)};
+    posted2[size_t(g)] = {a.roundMessage(g, 0.0, 1.0), b.roundMessage(g, 0.0, 3.0)};
+  };
+  auto finish = [&](int g, uint64_t r) {
+    one.finishRound(g, posted1[size_t(g)], r);
+    a.finishRound(g, posted2[size_t(g)], r);
+    b.finishRound(g, posted2[size_t(g)], r);
+    for (const ChainMove& mv : a.plannedMoves()) a.importChain(mv.chain, b.exportChain(mv.chain));
+    a.commitMoves();
+    b.commitMoves();
+  };
+  stepAndPost(0);
+  stepAndPost(1);
+  for (uint64_t r = 0; r < 12; ++r) {
+    finish(0, r);
+    stepAndPost(0);  // the regularisation moves here, before group 1 finishes round r
+    finish(1, r);
+    stepAndPost(1);
+  }
+  for (int c = 0; c < one.chainCount(); ++c) ASSERT_EQ(one.levelOf(c), (a.hosts(c) ? a : b).levelOf(c)) << c;
+  EXPECT_GT(a.chainMoves(), 0u);
+  const double s1 = sum(f1), s2 = sum(fa) + sum(fb);
+  EXPECT_GT(s1, 0.0);
+  EXPECT_NEAR(s1, s2, 1e-9 * s1);
+}
