@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -11,6 +12,14 @@ namespace {
 void embreeError(void*, RTCError code, const char* message) {
   throw std::runtime_error(std::string("Embree error ") + std::to_string(static_cast<int>(code)) + ": " +
                            (message ? message : ""));
+}
+
+// Embree requires finite origins and directions (Debian's build asserts it): a ray made of a NaN
+// or infinite number (a degenerate sample) hits nothing and its shadow ray is blocked, so the
+// sample contributes nothing instead of ending the process.
+bool finiteRay(const Vec3& o, const Vec3& d) {
+  const float sum = o.x + o.y + o.z + d.x + d.y + d.z;
+  return sum - sum == 0.0f;  // NaN or infinite if any term is
 }
 
 }  // namespace
@@ -96,6 +105,7 @@ SurfacePoint RayTracer::surfacePoint(uint32_t t, float b1, float b2) const {
 
 bool RayTracer::intersect(const Ray& ray, SurfacePoint& hit, float& distance) const {
   ++rays_;
+  if (!finiteRay(ray.origin, ray.dir) || std::isnan(ray.tMax)) return false;
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
   RTCRayHit rh;
@@ -122,6 +132,7 @@ bool RayTracer::intersect(const Ray& ray, SurfacePoint& hit, float& distance) co
 
 namespace {
 bool occludedRay(RTCScene scene, const Vec3& o, const Vec3& d, float tfar) {
+  if (!finiteRay(o, d) || !(tfar >= 0.0f)) return true;
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
   RTCRay r;
