@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include "core/error.h"
+#include "core/memory.h"
 #include "path/path_tracer.h"
 #include "scene/scene_summary.h"
 
@@ -15,6 +16,13 @@ void resolveDefaults(const Scene& scene, RenderSettings& s) {
 Renderer::Renderer(Scene scene, const RenderSettings& settings) : scene_(std::move(scene)), settings_(settings) {
   resolveDefaults(scene_, settings_);
   checkRenderable(scene_);
+  // The film (double RGB), its reduced copy and the image must fit: refuse before allocating.
+  const double filmBytes = 3.0 * 3.0 * sizeof(double) * settings_.width * double(settings_.height);
+  const uint64_t memory = physicalMemoryBytes();
+  if (!fitsInMemory(filmBytes, memory))
+    throw InputError(scene_.file, "--width/--height",
+                     std::to_string(settings_.width) + " x " + std::to_string(settings_.height) + " needs about " +
+                         formatGiB(filmBytes) + " of film memory, more than fits in " + formatGiB(double(memory)));
   const PerspectiveCamera* cam = settings_.camera.empty() ? &scene_.cameras.front() : scene_.findCamera(settings_.camera);
   if (!cam) {
     std::string names;

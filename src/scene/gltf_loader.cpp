@@ -12,6 +12,7 @@
 #include <regex>
 #include <set>
 
+#include "core/memory.h"
 #include "scene/gltf_accessors.h"
 #include "scene/gltf_container.h"
 #include "scene/gltf_materials.h"
@@ -228,18 +229,19 @@ void parseRenderDefaults(const Context& ctx, const SceneChoice& choice, RenderDe
   const Json* extras = getMember(ctx, *choice.scene, "extras", choice.element);
   if (!extras || !extras->is_object()) return;  // extras are free-form in glTF
   const std::string element = choice.element + ".extras";
-  auto positive = [&](const char* key) -> std::optional<int> {
+  auto positive = [&](const char* key, uint64_t limit) -> std::optional<int> {
     const Json* v = getMember(ctx, *extras, key, element);
     if (!v) return std::nullopt;
-    const bool ok = (v->is_number_unsigned() && v->get<uint64_t>() >= 1 && v->get<uint64_t>() <= INT_MAX);
-    if (!ok) ctx.fail(element, std::string(key) + " must be a positive integer, got " + brief(*v));
+    const bool ok = (v->is_number_unsigned() && v->get<uint64_t>() >= 1 && v->get<uint64_t>() <= limit);
+    if (!ok)
+      ctx.fail(element, std::string(key) + " must be an integer from 1 to " + std::to_string(limit) + ", got " + brief(*v));
     return static_cast<int>(v->get<uint64_t>());
   };
-  if (auto v = positive("width")) defaults->width = *v;
-  if (auto v = positive("height")) defaults->height = *v;
-  if (auto v = positive("max_depth")) defaults->maxDepth = *v;
-  if (auto v = positive("bench_width")) defaults->benchWidth = *v;
-  if (auto v = positive("bench_height")) defaults->benchHeight = *v;
+  if (auto v = positive("width", kMaxImageSide)) defaults->width = *v;
+  if (auto v = positive("height", kMaxImageSide)) defaults->height = *v;
+  if (auto v = positive("max_depth", kMaxDepth)) defaults->maxDepth = *v;
+  if (auto v = positive("bench_width", kMaxImageSide)) defaults->benchWidth = *v;
+  if (auto v = positive("bench_height", kMaxImageSide)) defaults->benchHeight = *v;
 }
 
 // Mesh data in the mesh's own space, triangulated and validated.
@@ -401,10 +403,22 @@ Scene loadGltf(const std::string& path) {
           readPrimitive(ctx, reader, meshes[m][p], indexed("meshes", m) + "." + indexed("primitives", p)));
   buffers.clear();
 
+  // Instancing multiplies triangles: refuse a scene that cannot fit before building it.
+  const std::vector<PlacedNode> placedNodes = placeNodes(nodes, choice.roots);
+  uint64_t instancedTriangles = 0;
+  for (const PlacedNode& placed : placedNodes)
+    if (nodes[placed.node].mesh)
+      for (const LocalPrimitive& prim : localMeshes[*nodes[placed.node].mesh]) instancedTriangles += prim.triangles.size() / 3;
+  const uint64_t memory = physicalMemoryBytes();
+  if (instancedTriangles > UINT32_MAX || !fitsInMemory(double(instancedTriangles) * kBytesPerTriangle, memory))
+    ctx.fail("nodes", "the scene instances " + std::to_string(instancedTriangles) + " triangles, about " +
+                          formatGiB(double(instancedTriangles) * kBytesPerTriangle) + " once loaded, more than fits in " +
+                          formatGiB(double(memory)) + " of memory");
+
   scene.materials = std::move(materials);
   std::optional<uint32_t> defaultIndex;
   std::set<std::string> cameraNames;
-  for (const PlacedNode& placed : placeNodes(nodes, choice.roots)) {
+  for (const PlacedNode& placed : placedNodes) {
     const Node& node = nodes[placed.node];
     const std::string element = indexed("nodes", placed.node);
     if (node.mesh) {

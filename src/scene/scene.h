@@ -33,6 +33,10 @@ struct PunctualLight {
   float cosInner = 1.0f, cosOuter = 0.0f;  // spot cone, cosines of the angles
 };
 
+// Limits of the render settings, from the scene or the command line.
+inline constexpr int kMaxImageSide = 16384;
+inline constexpr int kMaxDepth = 256;
+
 // Render settings a scene may carry in its scene-level `extras` (see README, "Scene format").
 struct RenderDefaults {
   int width = 256;

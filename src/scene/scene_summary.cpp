@@ -73,6 +73,18 @@ void checkRenderable(const Scene& scene) {
     const Triangle& t = scene.triangles[i];
     emitter = scene.materials[t.material].isEmissive() && hasArea(scene, t);
   }
+  // Radiance far above any physical source overflows single precision once multiplied by path
+  // throughputs: such a scene would render as dropped (infinite) samples.
+  constexpr float kMaxEmission = 1e15f;
+  for (size_t m = 0; m < scene.materials.size(); ++m)
+    if (maxComponent(scene.materials[m].emission) > kMaxEmission)
+      throw InputError(scene.file, "materials[" + std::to_string(m) + "] '" + scene.materials[m].name + "'",
+                       "emitted radiance (emissiveFactor x emissive strength) above 1e15 would overflow single "
+                       "precision; scale the scene's light units down");
+  for (const PunctualLight& l : scene.punctualLights)
+    if (maxComponent(l.intensity) > kMaxEmission)
+      throw InputError(scene.file, "light '" + l.name + "'",
+                       "intensity above 1e15 would overflow single precision; scale the scene's light units down");
   if (!emitter)
     throw InputError(
         scene.file, "scene",

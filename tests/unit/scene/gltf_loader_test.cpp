@@ -676,15 +676,21 @@ TEST_F(Synthesised, SceneExtrasBecomeRenderDefaults) {
 }
 
 TEST_F(Synthesised, BadSceneExtrasAreRejected) {
-  const std::vector<Json> bad = {{{"width", "320"}}, {{"height", 0}},         {{"max_depth", -3}},
-                                 {{"width", 1.5}},   {{"bench_width", true}}, {{"bench_height", 1e12}}};
+  // Absurd sizes too: a 16385-pixel side or a depth of 257 is refused before anything is allocated.
+  const std::vector<Json> bad = {{{"width", "320"}},       {{"height", 0}},         {{"max_depth", -3}},
+                                 {{"width", 1.5}},         {{"bench_width", true}}, {{"bench_height", 1e12}},
+                                 {{"width", 16385}},       {{"max_depth", 257}},    {{"height", 2147483648.0}}};
   for (const Json& extras : bad) {
     GltfBuilder b;
     b.scene({}, extras);
     const std::string key = extras.begin().key();
-    EXPECT_TRUE(contains(loadError(b.finish()), "scenes[0].extras: " + key + " must be a positive integer"))
+    const std::string range = key == "max_depth" ? "from 1 to 256" : "from 1 to 16384";
+    EXPECT_TRUE(contains(loadError(b.finish()), "scenes[0].extras: " + key + " must be an integer " + range))
         << extras.dump();
   }
+  GltfBuilder edge;
+  edge.scene({}, {{"width", 16384}, {"max_depth", 256}});
+  EXPECT_EQ(load(edge.finish()).defaults.width, 16384) << "the limits themselves are allowed";
 }
 
 TEST_F(Synthesised, SceneChoiceFollowsTheSceneProperty) {
@@ -870,4 +876,21 @@ TEST_F(Synthesised, DeepHierarchyDoesNotOverflowTheStack) {
 }
 
 }  // namespace
+}  // namespace relt::test
+
+namespace relt::test {
+
+// A small file can instance a mesh into more triangles than any machine holds: refused by count
+// before the instances are built (100 000 triangles x 50 000 nodes = 5e9 > 2^32).
+TEST_F(Synthesised, InstancingBeyondMemoryIsRefusedBeforeBuilding) {
+  GltfBuilder b;
+  std::vector<uint16_t> idx;
+  for (int t = 0; t < 100000; ++t) idx.insert(idx.end(), {0, 1, 2});
+  const int mesh = b.triangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, idx);
+  std::vector<int> roots;
+  for (int n = 0; n < 50000; ++n) roots.push_back(b.node({{"mesh", mesh}, {"translation", {n, 0, 0}}}));
+  b.scene(roots);
+  EXPECT_TRUE(contains(loadError(b.finish()), "nodes: the scene instances 5000000000 triangles"));
+}
+
 }  // namespace relt::test

@@ -82,3 +82,21 @@ TEST_F(SceneSummary, ZeroAreaEmissiveTriangleIsNoEmitter) {
 
 }  // namespace
 }  // namespace relt::test
+
+namespace relt::test {
+namespace {
+
+// Radiance that overflows single precision once multiplied along a path is refused, for emissive
+// materials and punctual lights alike; bright but physical sources (the sun is ~1e9) are fine.
+TEST_F(SceneSummary, AbsurdlyBrightSourcesAreNotRenderable) {
+  Json hot = kEmissive;
+  hot["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = 1e38;
+  EXPECT_NE(renderableError(load(quadScene(hot))).find("above 1e15 would overflow single precision"), std::string::npos);
+  EXPECT_NE(renderableError(load(quadScene(kDiffuse, 1e30))).find("intensity above 1e15"), std::string::npos);
+  Json bright = kEmissive;
+  bright["extensions"]["KHR_materials_emissive_strength"]["emissiveStrength"] = 1e9;
+  EXPECT_EQ(renderableError(load(quadScene(bright))), "");
+}
+
+}  // namespace
+}  // namespace relt::test
