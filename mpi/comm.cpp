@@ -1,19 +1,85 @@
 #include "comm.h"
 
+#include "interrupt.h"
+
+#include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <mutex>
+#include <thread>
 
 namespace relt::mpi {
 namespace {
 double g_collectiveSeconds = 0.0;
+// When this rank entered the collective it is waiting in (steady-clock nanoseconds), 0 outside.
+std::atomic<int64_t> g_waitingSince{0};
+
+int64_t nowNanoseconds() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
 
 // Times one collective call, including the wait for the slowest rank.
 template <class F>
 void timed(F&& f) {
   const auto t0 = std::chrono::steady_clock::now();
+  g_waitingSince = nowNanoseconds();
   f();
+  g_waitingSince = 0;
   g_collectiveSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
+
+// Ends this process when it has waited longer than `timeout` seconds in one collective: mpirun
+// then ends the whole job with an error. Open MPI itself ends the job when a rank dies, but not
+// when a rank stalls or a host disappears without its daemon noticing.
+class StallWatchdog {
+ public:
+  StallWatchdog(double timeout, int rank) : timeout_(timeout), rank_(rank), thread_([this] { watch(); }) {}
+  ~StallWatchdog() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      done_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+  }
+
+ private:
+  void watch() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (!wake_.wait_for(lock, std::chrono::milliseconds(250), [this] { return done_; })) {
+      const int64_t since = g_waitingSince.load();
+      if (since == 0 || (nowNanoseconds() - since) * 1e-9 < timeout_) continue;
+      std::fprintf(stderr,
+                   "relt: error: rank %d waited %.0f s for the other ranks: a rank or its host failed or stalled; "
+                   "ending the job (--stall-timeout)\n",
+                   rank_, timeout_);
+      std::fflush(stderr);
+      std::_Exit(1);
+    }
+  }
+  double timeout_;
+  int rank_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool done_ = false;
+  std::thread thread_;
+};
+std::unique_ptr<StallWatchdog> g_watchdog;
+
 }  // namespace
+
+void startStallWatchdog(double timeoutSeconds) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  g_watchdog.reset();
+  if (timeoutSeconds > 0.0) g_watchdog = std::make_unique<StallWatchdog>(timeoutSeconds, rank);
+}
 
 Session::Session(int* argc, char*** argv) {
   MPI_Init(argc, argv);
@@ -23,7 +89,10 @@ Session::Session(int* argc, char*** argv) {
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
 }
 
-Session::~Session() { MPI_Finalize(); }
+Session::~Session() {
+  g_watchdog.reset();
+  MPI_Finalize();
+}
 
 void allreduceSum(std::vector<double>& data) {
   timed([&] {
@@ -51,6 +120,13 @@ double allreduceMax(double value) {
   double out = value;
   timed([&] { MPI_Allreduce(&value, &out, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD); });
   return out;
+}
+
+Agreement agree(double elapsed) {
+  double mine[2] = {elapsed, stopSignalled() ? 1.0 : 0.0}, all[2];
+  timed([&] { MPI_Allreduce(mine, all, 2, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD); });
+  if (all[1] > 0.0) markStopAgreed();
+  return {all[0], all[1] > 0.0};
 }
 
 double allreduceSum(double value) {
@@ -152,5 +228,53 @@ std::vector<std::vector<double>> PendingAllgatherv::wait() {
   for (size_t r = 0; r < counts_.size(); ++r)
     out[r].assign(all_.begin() + offsets_[r], all_.begin() + offsets_[r] + counts_[r]);
   return out;
+}
+}  // namespace relt::mpi
+
+namespace relt::mpi {
+std::vector<std::vector<uint64_t>> gatherToRoot(const std::vector<uint64_t>& mine) {
+  int size = 1, rank = 0;
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  std::vector<std::vector<uint64_t>> out;
+  timed([&] {
+    const int count = static_cast<int>(mine.size());
+    std::vector<int> counts(static_cast<size_t>(size)), offsets(static_cast<size_t>(size));
+    MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+    std::vector<uint64_t> all;
+    if (rank == 0) {
+      size_t total = 0;
+      for (int r = 0; r < size; ++r) {
+        offsets[size_t(r)] = static_cast<int>(total);
+        total += size_t(counts[size_t(r)]);
+      }
+      all.resize(total);
+    }
+    MPI_Gatherv(mine.data(), count, MPI_UINT64_T, all.data(), counts.data(), offsets.data(), MPI_UINT64_T, 0,
+                MPI_COMM_WORLD);
+    if (rank == 0)
+      for (int r = 0; r < size; ++r)
+        out.emplace_back(all.begin() + offsets[size_t(r)], all.begin() + offsets[size_t(r)] + counts[size_t(r)]);
+  });
+  return out;
+}
+
+void broadcastFromRoot(std::vector<uint64_t>& words) {
+  timed([&] {
+    uint64_t n = words.size();
+    MPI_Bcast(&n, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+    words.resize(n);
+    constexpr uint64_t kChunk = uint64_t(1) << 26;  // MPI counts are int
+    for (uint64_t at = 0; at < n; at += kChunk)
+      MPI_Bcast(words.data() + at, static_cast<int>(std::min(kChunk, n - at)), MPI_UINT64_T, 0, MPI_COMM_WORLD);
+  });
+}
+
+void broadcastFromRoot(std::string& text) {
+  std::vector<uint64_t> words((text.size() + 7) / 8 + 1, 0);
+  words[0] = text.size();
+  std::memcpy(words.data() + 1, text.data(), text.size());
+  broadcastFromRoot(words);
+  text.assign(reinterpret_cast<const char*>(words.data() + 1), size_t(words[0]));
 }
 }  // namespace relt::mpi

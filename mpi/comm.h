@@ -22,6 +22,10 @@ class Session {
   int rank_ = 0, size_ = 1;
 };
 
+// From now on a rank that waits longer than this in one collective ends the job with a message
+// and status 1 (0: never). Rendering work between collectives does not count.
+void startStallWatchdog(double timeoutSeconds);
+
 // Sum of a double buffer onto the root (in place on the root).
 void reduceSumToRoot(std::vector<double>& data, int root = 0);
 // Element-wise sum over all ranks, result on every rank.
@@ -30,6 +34,13 @@ double allreduceMax(double value);
 double allreduceSum(double value);
 uint64_t allreduceSum(uint64_t value);
 int allreduceMax(int value);
+// What the ranks decide together after a pass or round: the largest elapsed time, and whether any
+// rank was signalled to stop (then stopAgreed() in interrupt.h holds from here on).
+struct Agreement {
+  double elapsed = 0.0;
+  bool stop = false;
+};
+Agreement agree(double elapsed);
 // Wall-clock seconds spent inside collectives by this rank, accumulated by the functions above.
 double collectiveSeconds();
 
@@ -73,4 +84,12 @@ class PendingAllgatherv {
   std::vector<int> counts_, offsets_;
   MPI_Request request_ = MPI_REQUEST_NULL;
 };
+}  // namespace relt::mpi
+
+namespace relt::mpi {
+// Every rank's words on the root, in rank order (empty elsewhere).
+std::vector<std::vector<uint64_t>> gatherToRoot(const std::vector<uint64_t>& mine);
+// The root's words (or text) on every rank.
+void broadcastFromRoot(std::vector<uint64_t>& words);
+void broadcastFromRoot(std::string& text);
 }  // namespace relt::mpi

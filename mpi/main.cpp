@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "comm.h"
+#include "interrupt.h"
 #include "core/error.h"
 #include "image/compare.h"
 #include "render_driver.h"
@@ -25,6 +26,8 @@ struct Options {
   std::vector<CLI::Option*> reltOnly;  // options that only relt takes
   std::string infoScene;
   std::string compareA, compareB, compareDiff, comparePng;
+  double stallTimeout = 120.0;
+  relt::mpi::CheckpointPlan checkpoint;
 };
 
 // relt: the ladder (family, levels), how many ladders, the exchanges and where chains live.
@@ -132,14 +135,27 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--chain-length", r.chainLength, "erpt: mutations per energy-redistribution chain")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
-  cmd.add_option("--width", r.width, "image width (default: scene extras, else 256)")->check(CLI::Range(1, 16384));
-  cmd.add_option("--height", r.height, "image height (default: scene extras, else 256)")->check(CLI::Range(1, 16384));
+  cmd.add_option("--width", r.width, "image width (default: scene extras, else 256)")->check(CLI::Range(1, relt::kMaxImageSide));
+  cmd.add_option("--height", r.height, "image height (default: scene extras, else 256)")->check(CLI::Range(1, relt::kMaxImageSide));
   cmd.add_option("--max-depth", r.maxDepth, "maximum path segments (default: scene extras, else 8)")
-      ->check(CLI::Range(1, 256));
+      ->check(CLI::Range(1, relt::kMaxDepth));
   cmd.add_option("--seed", r.seed, "random seed; the image depends only on it and the sample count")
       ->capture_default_str();
   cmd.add_option("--camera", r.camera, "camera name (default: the first camera)");
   cmd.add_option("--exposure", r.exposure, "PNG exposure in stops")->capture_default_str();
+  cmd.add_option("--stall-timeout", o.stallTimeout,
+                 "end the job with an error when a rank waits this many seconds for the others (0: never)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  auto* checkpoint = cmd.add_option("--checkpoint", o.checkpoint.dir,
+                                    "relt, pt, bdpt: write a checkpoint into this folder (made if missing) when the "
+                                    "render ends or is stopped, and every --checkpoint-every seconds");
+  cmd.add_option("--checkpoint-every", o.checkpoint.every, "seconds between checkpoints (0: only at the end)")
+      ->check(CLI::Range(0.0, 1e9))
+      ->needs(checkpoint)
+      ->capture_default_str();
+  cmd.add_option("--resume", o.checkpoint.resume,
+                 "continue the render of this checkpoint folder (same scene and settings; the budget is the total)");
   cmd.add_option("--mis", o.mis, "MIS heuristic")->check(CLI::IsMember({"power", "balance"}))->capture_default_str();
 }
 
@@ -182,6 +198,7 @@ void checkReplicaOptions(Options& o) {
 
 int main(int argc, char** argv) {
   relt::mpi::Session session(&argc, &argv);
+  relt::mpi::installStopHandlers();
   const bool root = session.isRoot();
 
   CLI::App app{"relt: replica-exchange light transport renderer (glTF 2.0 in, OpenEXR out), distributed with MPI.\n"
@@ -253,8 +270,13 @@ int main(int argc, char** argv) {
     if (o.render.integrator == relt::Integrator::Erpt && o.render.snapshotEvery > 0.0)
       throw relt::InputError("", "--snapshot-every", "not available for erpt");
     checkReplicaOptions(o);
+    const bool checkpoints = !o.checkpoint.dir.empty() || !o.checkpoint.resume.empty();
+    if (checkpoints && o.render.integrator != relt::Integrator::Relt && o.render.integrator != relt::Integrator::PathTracing &&
+        o.render.integrator != relt::Integrator::Bdpt)
+      throw relt::InputError("", "--checkpoint/--resume", "checkpoints are available for relt, pt and bdpt, not yet " + o.integrator);
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
-    relt::mpi::runRender(session, o.render);
+    relt::mpi::startStallWatchdog(o.stallTimeout);
+    relt::mpi::runRender(session, o.render, o.checkpoint);
     return 0;
   } catch (const relt::InputError& e) {
     if (root) std::fprintf(stderr, "relt: error: %s\n", e.what());

@@ -81,9 +81,10 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
     for (int c : mine) steps.push_back(schedule.doneAfter(rounds + 1, c) - schedule.doneAfter(rounds, c));
     if (pool.size() > 0) pool.run(steps, film);
     ++rounds;
-    const double now = allreduceMax(since(start));
-    lastRound = now - elapsed;
-    elapsed = now;
+    const Agreement agreed = agree(since(start));
+    lastRound = agreed.elapsed - elapsed;
+    elapsed = agreed.elapsed;
+    if (agreed.stop) break;
     if (session.isRoot() && elapsed - lastPrint >= 1.0) {
       lastPrint = elapsed;
       const double rate = double(schedule.mutationsAfter(rounds)) / elapsed;

@@ -7,6 +7,9 @@
 #include <cstdio>
 #include <memory>
 
+#include "checkpoint/checkpoint.h"
+#include "core/error.h"
+#include "interrupt.h"
 #include "mcmc/round_schedule.h"
 #include "replica/round_loop.h"
 #include "replica/replica_schedule.h"
@@ -86,7 +89,8 @@ class MpiTransport final : public RoundTransport {
 }  // namespace
 
 ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSettings& settings,
-                    std::vector<Film>& films, const SnapshotWriter& snapshot) {
+                    std::vector<Film>& films, const SnapshotWriter& snapshot, const CheckpointPlan& plan,
+                    const Resumed* checkpoint) {
   const ReplicaSettings rs = effectiveReplicaSettings(settings);
   PssEvaluator eval(renderer.context(), settings.width, settings.height);
 
@@ -97,14 +101,27 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   films.assign(rs.perLevel ? size_t(pool.levels()) : 1, Film(settings.width, settings.height));
 
   const double area = double(settings.width) * settings.height;
-  const ReplicaSchedule schedule(area, pool.chainCount(), rs.exchangeInterval, settings.seconds,
-                                 settings.mutationsPerPixel.value_or(16.0));
+  ReplicaSchedule schedule(area, pool.chainCount(), rs.exchangeInterval, settings.seconds,
+                           settings.mutationsPerPixel.value_or(16.0));
+  RoundLoopStart resumed;
+  if (checkpoint) {
+    checkpoint->restoreFilms(films);
+    try {
+      pool.restore(checkpoint->parts);
+    } catch (const std::runtime_error& e) {
+      throw InputError(checkpoint->file, "", e.what());
+    }
+    resumed.rounds = checkpoint->progress.at("rounds").get<uint64_t>();
+    resumed.elapsed = checkpoint->progress.at("elapsed").get<double>();
+    schedule.resumeAt(resumed.rounds, pool.stepsPerChain());
+  }
   const double collectiveBefore = collectiveSeconds();
   const auto start = Clock::now();
-  double lastSnapshot = 0.0, lastPrint = 0.0;
+  double lastSnapshot = resumed.elapsed, lastPrint = resumed.elapsed, lastCheckpoint = resumed.elapsed;
   const bool tty = ::isatty(STDERR_FILENO);
   RoundLoopHooks hooks;
-  hooks.elapsed = [&] { return since(start); };
+  hooks.elapsed = [&] { return resumed.elapsed + since(start); };
+  hooks.stop = [] { return stopSignalled(); };
   hooks.roundDone = [&](uint64_t rounds, double elapsed, bool more) {
     if (session.isRoot() && elapsed - lastPrint >= 1.0) {
       lastPrint = elapsed;
@@ -118,9 +135,16 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
       if (session.isRoot())
         snapshot(sums, replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
     }
+    if (!plan.dir.empty() && checkpointDue(plan.every, elapsed, lastCheckpoint, more)) {
+      lastCheckpoint = elapsed;
+      const nlohmann::json progress = {
+          {"rounds", rounds}, {"elapsed", elapsed}, {"steps_per_chain", schedule.stepsAfter(rounds)}};
+      saveCheckpoint(plan, "relt", progress, films, pool.checkpointPart());
+    }
   };
   MpiTransport transport(session.rank());
-  const RoundLoopResult loop = runRoundLoop(pool, schedule, transport, films, hooks);
+  const RoundLoopResult loop = runRoundLoop(pool, schedule, transport, films, hooks, resumed);
+  if (loop.stopped) markStopAgreed();
   const uint64_t rounds = loop.rounds;
   const std::vector<double> stepMean = allgather(loop.stepMean), stepDeviation = allgather(loop.stepDeviation);
   const std::vector<double> finishMean = allgather(loop.finishMean);
@@ -147,6 +171,9 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   out.resolveDivisor = replicaResolveDivisor(out.stepsPerChain, rs.ladders, area);
   out.loopSeconds = elapsed;
   out.roundCollectiveSeconds = allgather(roundCollective);
+  uint64_t nonFinite = 0;
+  for (const LevelCounters& c : pool.hostedCounters()) nonFinite += c.nonFinite;
+  out.nonFinitePerRank = allgather(double(nonFinite));
   for (const LevelCounters& c : pool.hostedCounters()) {
     LevelCounters s;
     static_cast<ChainCounters&>(s) = sumOverRanks(c);

@@ -4,6 +4,7 @@
 // taken by src/replica from the gathered data; this layer only moves it.
 #include <vector>
 
+#include "checkpoint_io.h"
 #include "comm.h"
 #include "film/film.h"
 #include "pssmlt_driver.h"
@@ -25,6 +26,7 @@ struct ReltOutcome {
   uint64_t chainMoves = 0;                  // chains moved between ranks by load balancing
   std::vector<int> chainsPerRank;           // placement at the end
   std::vector<double> stepMean, stepDeviation;  // per rank: seconds stepping a group for a round
+  std::vector<double> nonFinitePerRank;         // per rank: proposals with NaN/Inf splats (dropped)
   std::vector<double> finishMean;               // per rank: seconds in a group round's finishRound
   uint64_t bootstrapSamples = 0;
   double resolveDivisor = 0.0;              // film sums -> pixels
@@ -33,8 +35,10 @@ struct ReltOutcome {
 };
 
 // Renders every chain this rank hosts into `films`, which it sizes: one film, or one per level
-// with --per-level (their sum is the image); not yet reduced. Collective.
+// with --per-level (their sum is the image); not yet reduced. Continues `resumed` if given and
+// writes checkpoints as the plan says. Collective.
 ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSettings& settings,
-                    std::vector<Film>& films, const SnapshotWriter& snapshot);
+                    std::vector<Film>& films, const SnapshotWriter& snapshot, const CheckpointPlan& plan,
+                    const Resumed* resumed);
 
 }  // namespace relt::mpi

@@ -8,14 +8,19 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 
+#include "checkpoint/checkpoint.h"
+#include "checkpoint_io.h"
 #include "core/error.h"
 #include "render/renderer.h"
 #include "erpt_driver.h"
+#include "interrupt.h"
 #include "pass_loop.h"
 #include "pssmlt_driver.h"
 #include "relt_driver.h"
 #include "scene/gltf_loader.h"
+#include "scene/scene_summary.h"
 
 namespace relt::mpi {
 namespace {
@@ -45,6 +50,26 @@ void checkOutputsWritable(const Session& session, const RenderSettings& s) {
   if (bad) throw InputError("", "", session.isRoot() ? problem : "output not writable");
 }
 
+// The checkpoint folder is made if missing and must be writable; the one to resume from must
+// hold a checkpoint (read and checked later). Before any work, on the root, shared with all.
+void checkCheckpointFolders(const Session& session, const CheckpointPlan& plan) {
+  std::string problem;
+  if (session.isRoot()) {
+    std::error_code error;
+    if (!plan.dir.empty()) {
+      std::filesystem::create_directories(plan.dir, error);
+      if (error || !std::filesystem::is_directory(plan.dir))
+        problem = plan.dir + ": cannot make the checkpoint folder" + (error ? ": " + error.message() : "");
+      else if (::access(plan.dir.c_str(), W_OK) != 0)
+        problem = plan.dir + ": the checkpoint folder is not writable";
+    }
+    if (problem.empty() && !plan.resume.empty() && !std::filesystem::exists(checkpointFile(plan.resume)))
+      problem = plan.resume + ": no checkpoint to resume (" + checkpointFile(plan.resume) + " does not exist)";
+  }
+  const int bad = allreduceMax(problem.empty() ? 0 : 1);
+  if (bad) throw InputError("", "", session.isRoot() ? problem : "checkpoint folder");
+}
+
 // EXR (with optional extra layers) and optional PNG, each written atomically. Root only.
 void writeImages(const RenderSettings& settings, const Image& image, const std::vector<ImageLayer>& layers = {}) {
   writeExr(settings.output, image, layers);
@@ -55,6 +80,11 @@ void writeImages(const RenderSettings& settings, const Image& image, const std::
 void writeOutputs(const RenderSettings& settings, const Image& image, nlohmann::json stats, Clock::time_point wallStart,
                   const std::vector<ImageLayer>& layers = {}) {
   writeImages(settings, image, layers);
+  stats["interrupted"] = stopAgreed();
+  if (checkpointTally().written > 0)
+    stats["checkpoints"] = {{"written", checkpointTally().written}, {"seconds", checkpointTally().seconds}};
+  if (stopAgreed())
+    std::fprintf(stderr, "relt: stopped early by a signal (SIGINT/SIGTERM/SIGUSR1): the image holds the work done so far\n");
   if (!settings.stats.empty()) {
     stats["wall_seconds"] = since(wallStart);
     writeFileAtomically(settings.stats, stats.dump(2) + "\n");
@@ -66,6 +96,7 @@ void writeOutputs(const RenderSettings& settings, const Image& image, nlohmann::
 struct Gathered {
   double renderSeconds = 0.0;
   uint64_t rays = 0, dropped = 0;
+  std::vector<double> droppedPerRank;  // NaN/Inf samples each rank dropped
   std::vector<double> collective;
   std::vector<std::string> hosts;  // each rank's processor name
 };
@@ -76,10 +107,14 @@ Gathered gatherAfterRender(Clock::time_point renderStart, const Renderer& render
   reduceSumToRoot(film.data());
   g.rays = allreduceSum(renderer.rays());
   g.dropped = allreduceSum(film.droppedSamples());
+  g.droppedPerRank = allgather(double(film.droppedSamples()));
   g.collective = allgather(collectiveSeconds());
   g.hosts = processorNames();
   return g;
 }
+
+// Per-rank counts gathered as doubles, written as integers.
+std::vector<uint64_t> counts(const std::vector<double>& v) { return std::vector<uint64_t>(v.begin(), v.end()); }
 
 // The stats every integrator writes.
 nlohmann::json commonStats(const RenderSettings& settings, const Session& session, const Gathered& g,
@@ -92,15 +127,18 @@ nlohmann::json commonStats(const RenderSettings& settings, const Session& sessio
   j["render_seconds"] = g.renderSeconds;
   j["rays_per_second"] = g.rays / std::max(g.renderSeconds, 1e-9);
   j["nan_inf_samples_dropped"] = g.dropped;
+  j["nan_inf_samples_dropped_per_rank"] = counts(g.droppedPerRank);
   j["collective_seconds_per_rank"] = g.collective;
   j["image_mean"] = image.mean();
   return j;
 }
 
-void addMutationRates(nlohmann::json& j, uint64_t mutations, const Gathered& g, int ranks) {
+// `earlier`: mutations of the render this one resumed (in the total, not in the rates).
+void addMutationRates(nlohmann::json& j, uint64_t mutations, const Gathered& g, int ranks, uint64_t earlier = 0) {
   j["mutations"] = mutations;
-  j["mutations_per_second"] = mutations / std::max(g.renderSeconds, 1e-9);
-  j["mutations_per_second_per_rank"] = mutations / std::max(g.renderSeconds, 1e-9) / ranks;
+  const double now = double(mutations - std::min(mutations, earlier));
+  j["mutations_per_second"] = now / std::max(g.renderSeconds, 1e-9);
+  j["mutations_per_second_per_rank"] = now / std::max(g.renderSeconds, 1e-9) / ranks;
 }
 
 double ratio(uint64_t a, uint64_t b) { return b ? double(a) / double(b) : 0.0; }
@@ -145,7 +183,8 @@ nlohmann::json reltStats(const mpi::ReltOutcome& o) {
   return j;
 }
 
-void renderRelt(const Session& session, Renderer& renderer, const RenderSettings& settings, Clock::time_point wallStart) {
+void renderRelt(const Session& session, Renderer& renderer, const RenderSettings& settings, Clock::time_point wallStart,
+                const CheckpointPlan& plan, const Resumed* resumed) {
   const bool layers = settings.replica.perLevel;
   std::vector<Film> films;
   const auto renderStart = Clock::now();
@@ -153,7 +192,7 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
   const mpi::ReltOutcome o = mpi::runRelt(session, renderer, settings, films, [&](const std::vector<double>& sums, double d) {
     writeImages(settings, Renderer::resolve(films[0], sums, d));
     ++snapshots;
-  });
+  }, plan, resumed);
   // The first film takes the sum of all levels; the others are reduced as layers.
   std::vector<std::vector<double>> layerSums;
   if (layers)
@@ -177,29 +216,38 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
   }
   nlohmann::json j = commonStats(settings, session, g, image);
   j["nan_inf_samples_dropped"] = nonFinite;
-  addMutationRates(j, mutations, g, session.size());
+  j["nan_inf_samples_dropped_per_rank"] = counts(o.nonFinitePerRank);
+  const uint64_t earlier =
+      resumed ? resumed->progress.at("steps_per_chain").get<uint64_t>() * uint64_t(o.ladders * o.levels) : 0;
+  addMutationRates(j, mutations, g, session.size(), earlier);
   j["snapshots"] = snapshots;
   j["invalid_proposals"] = invalid;
   j["relt"] = reltStats(o);
+  if (resumed) j["resumed_from"] = {{"checkpoint", resumed->file}, {"progress", resumed->progress}};
   writeOutputs(settings, image, j, wallStart, out);
   std::fprintf(stderr, "relt: %llu mutations in %llu rounds, %.2f s, %.3f M mutations/s, %llu round trips; wrote %s\n",
                static_cast<unsigned long long>(mutations), static_cast<unsigned long long>(o.rounds), g.renderSeconds,
-               mutations / std::max(g.renderSeconds, 1e-9) * 1e-6, static_cast<unsigned long long>(o.roundTrips),
+               j["mutations_per_second"].get<double>() * 1e-6, static_cast<unsigned long long>(o.roundTrips),
                settings.output.c_str());
 }
 
 }  // namespace
 
-void runRender(const Session& session, RenderSettings settings) {
+void runRender(const Session& session, RenderSettings settings, CheckpointPlan plan) {
   const auto wallStart = Clock::now();
   Renderer renderer(loadGltf(settings.scenePath), settings);
   settings = renderer.settings();
   if (session.isRoot())
     for (const std::string& w : renderer.scene().warnings) std::fprintf(stderr, "relt: warning: %s\n", w.c_str());
   checkOutputsWritable(session, settings);
+  checkCheckpointFolders(session, plan);
+  plan.identity = imageIdentity(settings, sceneDigest(settings.scenePath, summarizeScene(renderer.scene())));
+  plan.settings = settings.toJson();
+  std::optional<Resumed> resumed;
+  if (!plan.resume.empty()) resumed = loadCheckpoint(plan, integratorName(settings.integrator));
 
   if (settings.integrator == Integrator::Relt) {
-    renderRelt(session, renderer, settings, wallStart);
+    renderRelt(session, renderer, settings, wallStart, plan, resumed ? &*resumed : nullptr);
     return;
   }
   Film film(settings.width, settings.height);
@@ -262,6 +310,17 @@ void runRender(const Session& session, RenderSettings settings) {
                  static_cast<unsigned long long>(o.counters.mutations), g.renderSeconds, settings.output.c_str());
     return;
   }
+  // pt and bdpt: a checkpoint is the film and the passes done (pass k's samples depend on k only).
+  PassStart start;
+  uint64_t earlierSamples = 0;
+  std::vector<Film> films = {film};
+  if (resumed) {
+    resumed->restoreFilms(films);
+    film = films[0];
+    start.passes = resumed->progress.at("passes").get<int>();
+    start.elapsed = resumed->progress.at("elapsed").get<double>();
+    earlierSamples = resumed->progress.at("samples").get<uint64_t>();
+  }
   const auto renderStart = Clock::now();
   int snapshots = 0;
   const int passes = runPasses(
@@ -272,8 +331,17 @@ void runRender(const Session& session, RenderSettings settings) {
         reduceSumToRoot(sums);
         if (session.isRoot()) writeImages(settings, Renderer::resolve(film, sums, done));
         ++snapshots;
+      },
+      start,
+      [&, lastCheckpoint = start.elapsed](int done, double elapsed, bool more) mutable {
+        if (plan.dir.empty() || !checkpointDue(plan.every, elapsed, lastCheckpoint, more)) return;
+        lastCheckpoint = elapsed;
+        films[0] = film;
+        const nlohmann::json progress = {
+            {"passes", done}, {"elapsed", elapsed}, {"samples", earlierSamples + allreduceSum(renderer.samples())}};
+        saveCheckpoint(plan, integratorName(settings.integrator), progress, films, {});
       });
-  const uint64_t samples = allreduceSum(renderer.samples());
+  const uint64_t samplesNow = allreduceSum(renderer.samples()), samples = earlierSamples + samplesNow;
   const Gathered g = gatherAfterRender(renderStart, renderer, film);
   if (!session.isRoot()) return;
 
@@ -282,11 +350,12 @@ void runRender(const Session& session, RenderSettings settings) {
   j["spp"] = passes;
   j["snapshots"] = snapshots;
   j["samples"] = samples;
-  j["samples_per_second"] = samples / std::max(g.renderSeconds, 1e-9);
-  j["samples_per_second_per_rank"] = samples / std::max(g.renderSeconds, 1e-9) / session.size();
+  j["samples_per_second"] = samplesNow / std::max(g.renderSeconds, 1e-9);
+  j["samples_per_second_per_rank"] = samplesNow / std::max(g.renderSeconds, 1e-9) / session.size();
+  if (resumed) j["resumed_from"] = {{"checkpoint", resumed->file}, {"progress", resumed->progress}};
   writeOutputs(settings, image, j, wallStart);
   std::fprintf(stderr, "relt: %d spp, %.2f s, %.3f M samples/s, %.2f M rays/s; wrote %s%s%s\n", passes,
-               g.renderSeconds, samples / std::max(g.renderSeconds, 1e-9) * 1e-6,
+               g.renderSeconds, samplesNow / std::max(g.renderSeconds, 1e-9) * 1e-6,
                g.rays / std::max(g.renderSeconds, 1e-9) * 1e-6,
                settings.output.c_str(), settings.png.empty() ? "" : " and ", settings.png.c_str());
 }

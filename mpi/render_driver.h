@@ -1,12 +1,14 @@
 #pragma once
-// The distributed render loop for the independent-sample integrators (pt, bdpt).
+// A render from loading the scene to writing the outputs, for every integrator.
+#include "checkpoint_io.h"
 #include "comm.h"
 #include "render/settings.h"
 
 namespace relt::mpi {
 
-// Loads the scene on every rank, renders, reduces the films on the root and writes the outputs.
-// Throws InputError for anything the user can fix.
-void runRender(const Session& session, RenderSettings settings);
+// Loads the scene on every rank, renders (continuing a checkpoint and writing checkpoints as the
+// plan says), reduces the films on the root and writes the outputs. Throws InputError for
+// anything the user can fix.
+void runRender(const Session& session, RenderSettings settings, CheckpointPlan plan = {});
 
 }  // namespace relt::mpi

@@ -34,10 +34,18 @@ std::string temporaryPathFor(const std::string& path) {
 
 void commitTemporary(const std::string& tmp, const std::string& path) {
   // fsync before rename so that a crash leaves either the old or the new file, never a torn one.
+  // A full disk can show only here (delayed allocation): then the old file stays.
   const int fd = ::open(tmp.c_str(), O_RDONLY);
   if (fd >= 0) {
-    ::fsync(fd);
+    const bool synced = ::fsync(fd) == 0;
+    const std::string reason = synced ? "" : std::strerror(errno);
     ::close(fd);
+    if (!synced) {
+      std::remove(tmp.c_str());
+      std::string message = "write failed: ";
+      message += reason;
+      throw InputError(path, "", message);
+    }
   }
   if (std::rename(tmp.c_str(), path.c_str()) != 0) {
     const std::string reason = std::strerror(errno);
@@ -50,11 +58,14 @@ void writeFileAtomically(const std::string& path, const std::string& content) {
   const std::string tmp = temporaryPathFor(path);
   FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw InputError(path, "", std::string("cannot write: ") + std::strerror(errno));
-  const bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size();
+  const bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size() && std::fflush(f) == 0;
+  const std::string reason = ok ? "" : std::strerror(errno);
   const bool closed = std::fclose(f) == 0;
   if (!ok || !closed) {
     std::remove(tmp.c_str());
-    throw InputError(path, "", "write failed (disk full?)");
+    std::string message = "write failed: ";
+    message += ok ? std::strerror(errno) : reason.c_str();
+    throw InputError(path, "", message);
   }
   commitTemporary(tmp, path);
 }

@@ -181,7 +181,7 @@ void RoundTrips::visit(int chain, int level) {
 }
 
 uint64_t RoundTrips::total() const {
-  uint64_t n = 0;
+  uint64_t n = earlier_;
   for (uint64_t t : trips_) n += t;
   return n;
 }

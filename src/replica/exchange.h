@@ -62,6 +62,8 @@ class RoundTrips {
   void visit(int chain, int level);
   uint64_t trips(int chain) const { return trips_[size_t(chain)]; }
   uint64_t total() const;
+  // Trips counted before a checkpoint this render resumed from (part of total()).
+  void addEarlier(uint64_t trips) { earlier_ += trips; }
   // Where chain c is in its trip (moves with the chain when only its host tracks it).
   uint8_t phase(int chain) const { return static_cast<uint8_t>(phase_[size_t(chain)]); }
   void setPhase(int chain, uint8_t phase) { phase_[size_t(chain)] = static_cast<Phase>(phase); }
@@ -71,6 +73,7 @@ class RoundTrips {
   int levels_;
   std::vector<Phase> phase_;
   std::vector<uint64_t> trips_;
+  uint64_t earlier_ = 0;
 };
 
 }  // namespace relt

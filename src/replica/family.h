@@ -70,6 +70,9 @@ class LevelFamily {
   // least 1 % (each one costs every chain a re-evaluation of its state); true if it moved.
   const Tempering* tempering() const { return kind_ == FamilyKind::Tempered ? &tempering_ : nullptr; }
   bool setRegularisationStep(uint64_t n);
+  // The connection roughness floor now, and setting it back to one saved in a checkpoint.
+  float regularisationFloor() const { return tempering_.minAlpha; }
+  void restoreRegularisationFloor(float minAlpha) { tempering_.minAlpha = minAlpha; }
   double temperature(int level) const { return temperatures_.empty() ? 1.0 : temperatures_[size_t(level)]; }
   // Whether samples of `level` estimate class n (c[level][n]).
   bool estimates(int level, int cls) const { return levels_[size_t(level)].estimates[size_t(cls)]; }

@@ -57,6 +57,7 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   bootstrapCount_ = double(samples);
   largeSum_.assign(size_t(m), 0.0);
   pendingLarge_.assign(size_t(roundGroups(settings.ladders)), LargeStepSums(m));  // defines groups()
+  postedLarge_ = pendingLarge_;
   messageEpoch_.assign(size_t(groups()), 0);
   windowSeconds_.assign(size_t(groups()), std::vector<double>(size_t(ranks), 0.0));
   balanceDecisions_.assign(size_t(groups()), 0);
@@ -134,14 +135,14 @@ void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films, 
 }
 
 size_t ReplicaPool::messageLength(int group, int rank) const {
-  if (!active_) return 3;
-  if (localDecisions()) return size_t(levels()) + 3;
+  if (!active_) return 4;
+  if (localDecisions()) return size_t(levels()) + 4;
   size_t chains = 0;
   for (int c : hostedByRank_[size_t(rank)]) chains += groupOf(c) == group;
-  return chains * size_t(levels()) + size_t(levels()) + 3;
+  return chains * size_t(levels()) + size_t(levels()) + 4;
 }
 
-std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double roundSeconds) {
+std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double roundSeconds, bool stop) {
   std::vector<double> msg;
   msg.reserve(messageLength(group, rank_));
   LargeStepSums& large = pendingLarge_[size_t(group)];
@@ -153,21 +154,25 @@ std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double 
   }
   msg.push_back(double(large.count));
   msg.push_back(roundSeconds);
+  msg.push_back(stop ? 1.0 : 0.0);
   msg.push_back(elapsed);
+  postedLarge_[size_t(group)] = large;
   large = LargeStepSums(levels());
   messageEpoch_[size_t(group)] = epoch_;
   return msg;
 }
 
-double ReplicaPool::finishRound(int group, const std::vector<std::vector<double>>& messages, uint64_t round) {
+RoundAgreement ReplicaPool::finishRound(int group, const std::vector<std::vector<double>>& messages, uint64_t round) {
   const int m = levels();
   std::vector<double>& window = windowSeconds_[size_t(group)];
-  double elapsed = 0.0;
+  RoundAgreement agreed;
   for (size_t r = 0; r < messages.size(); ++r) {
-    elapsed = std::max(elapsed, messages[r].back());
-    window[r] += messages[r][messages[r].size() - 2];
+    const size_t n = messages[r].size();
+    agreed.elapsed = std::max(agreed.elapsed, messages[r][n - 1]);
+    agreed.stop |= messages[r][n - 2] > 0.0;
+    window[r] += messages[r][n - 3];
   }
-  if (!active_) return elapsed;
+  if (!active_) return agreed;
 
   // The group's chains' targets: from the messages by global id, or with local decisions from the
   // hosted chains themselves (no work that grows with the rank count). Then the large-step sums
@@ -236,7 +241,7 @@ double ReplicaPool::finishRound(int group, const std::vector<std::vector<double>
     moves_ = balanceMoves(group, window);
     window.assign(window.size(), 0.0);
   }
-  return elapsed;
+  return agreed;
 }
 
 std::vector<ChainMove> ReplicaPool::balanceMoves(int group, const std::vector<double>& seconds) const {

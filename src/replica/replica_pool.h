@@ -28,6 +28,12 @@ namespace relt {
 std::vector<double> bootstrapFeatures(PssEvaluator& eval, const FamilySettings& family, uint64_t seed, int count,
                                       int first, int stride);
 
+// What the ranks' messages of a group round decide together besides the exchanges.
+struct RoundAgreement {
+  double elapsed = 0.0;  // the largest elapsed time
+  bool stop = false;     // some rank was asked to stop
+};
+
 class ReplicaPool {
  public:
   // `bootstrap` holds every bootstrap sample's features (bootstrapFeatures, summed over ranks).
@@ -55,12 +61,14 @@ class ReplicaPool {
   void runRound(int group, uint64_t steps, std::vector<Film>& films, const std::function<void()>& progress = {});
   // This rank's message for the group's collective (`roundSeconds`: time this rank spent in
   // runRound), and the length rank `rank`'s message has (it changes when chains move).
-  std::vector<double> roundMessage(int group, double elapsed, double roundSeconds);
+  // `stop`: this rank was asked to stop (a signal); every rank then ends after this round.
+  std::vector<double> roundMessage(int group, double elapsed, double roundSeconds, bool stop = false);
   size_t messageLength(int group, int rank) const;
   // Reads every rank's message (rank order) of the group's round `round`: exchanges in its
   // ladders, new level labels, new normalisers, and after every balance window a new placement of
-  // the group's chains from the ranks' speeds (moves planned). Returns the largest elapsed time.
-  double finishRound(int group, const std::vector<std::vector<double>>& messages, uint64_t round);
+  // the group's chains from the ranks' speeds (moves planned). Returns the largest elapsed time
+  // and whether any rank asked to stop.
+  RoundAgreement finishRound(int group, const std::vector<std::vector<double>>& messages, uint64_t round);
 
   // Chain migration after finishRound, the same plan on every rank: the sender exports each chain
   // it gives, the receiver imports it, then every rank commits (the placement changes).
@@ -70,6 +78,17 @@ class ReplicaPool {
   void commitMoves();
   uint64_t chainMoves() const { return chainMoves_; }  // chains moved so far
   int hostedCount(int rank) const { return int(hostedByRank_[size_t(rank)].size()); }
+
+  // Checkpoints, taken where group 0 has just finished a round and every other group's collective
+  // of the round before is pending (RoundLoopHooks::roundDone). This rank's part: its chains by
+  // global id, the sums every rank shares, its share of the pending messages and its counters.
+  // restore() reads every rank's part of a checkpoint written with any number of ranks and puts
+  // the render back where it was; the round loop then posts the pending messages again
+  // (RoundLoopStart). Placement and load-balance windows start afresh (the image does not depend
+  // on them).
+  std::vector<uint64_t> checkpointPart() const;
+  void restore(const std::vector<std::vector<uint64_t>>& parts);
+  uint64_t stepsPerChain() const { return stepsPerChain_; }
 
   // Diagnostics. Exchange tallies and round trips are the same on every rank (with local
   // decisions: of the hosted ladders only, the MPI layer sums them); level counters cover the
@@ -112,6 +131,7 @@ class ReplicaPool {
   std::vector<double> largeSum_;        // all ranks' large-step sums so far
   double largeCount_ = 0.0;
   std::vector<LargeStepSums> pendingLarge_;  // per group: this rank's, since the group's last message
+  std::vector<LargeStepSums> postedLarge_;   // per group: this rank's in its last message (checkpoints)
   uint64_t stepsPerChain_ = 0;          // steps every chain has taken (regularisation schedule)
   ExchangeTally tally_;
   RoundTrips trips_;

@@ -19,16 +19,19 @@ class ReplicaSchedule {
         seconds_(seconds),
         stepsPerChain_(static_cast<uint64_t>(std::ceil(mutationsPerPixel * filmArea / std::max(1, chains)))) {}
 
-  // Steps each chain takes in round `round` (0-based).
-  uint64_t stepsInRound(uint64_t round) const {
-    if (seconds_) return uint64_t(interval_);
-    const uint64_t done = round * uint64_t(interval_);
-    return done >= stepsPerChain_ ? 0 : std::min<uint64_t>(interval_, stepsPerChain_ - done);
+  // A render resumed from a checkpoint taken after `rounds` rounds and `steps` steps per chain
+  // (fewer than rounds x interval when the render it continues ended with a short round).
+  void resumeAt(uint64_t rounds, uint64_t steps) {
+    startRound_ = rounds;
+    startSteps_ = steps;
   }
+
+  // Steps each chain takes in round `round` (0-based).
+  uint64_t stepsInRound(uint64_t round) const { return stepsAfter(round + 1) - stepsAfter(round); }
   // Steps each chain has taken after `rounds` rounds.
   uint64_t stepsAfter(uint64_t rounds) const {
-    const uint64_t r = rounds * uint64_t(interval_);
-    return seconds_ ? r : std::min(r, stepsPerChain_);
+    const uint64_t r = rounds <= startRound_ ? startSteps_ : startSteps_ + (rounds - startRound_) * uint64_t(interval_);
+    return seconds_ ? r : std::min(r, std::max(stepsPerChain_, startSteps_));
   }
   // Whether round `rounds + 1` runs (see RoundSchedule::anotherRound).
   bool anotherRound(uint64_t rounds, double elapsed, double lastRound) const {
@@ -43,6 +46,7 @@ class ReplicaSchedule {
   int interval_;
   std::optional<double> seconds_;
   uint64_t stepsPerChain_;
+  uint64_t startRound_ = 0, startSteps_ = 0;
 };
 
 // Film sums -> pixels: with N steps per level the pixel is film area / N times the sum; as the

@@ -34,13 +34,24 @@ class RoundTransport {
 
 struct RoundLoopHooks {
   std::function<double()> elapsed;  // this rank's seconds since the loop started
+  std::function<bool()> stop;       // this rank was asked to stop (optional): all end after this round
   // After each round every group has stepped: rounds so far, the ranks' agreed elapsed time, and
-  // whether another round follows (snapshots, progress).
+  // whether another round follows (snapshots, progress, checkpoints: group 0 has finished round
+  // `rounds` - 1 and the other groups' collectives of that round are pending).
   std::function<void(uint64_t rounds, double elapsed, bool more)> roundDone;
+};
+
+// Where the loop starts: at the beginning, or where a checkpoint was taken (after `rounds` rounds,
+// `elapsed` seconds; the pool restored from it). A resumed loop posts the pending groups' messages
+// again and goes on exactly as the interrupted one would have.
+struct RoundLoopStart {
+  uint64_t rounds = 0;
+  double elapsed = 0.0;
 };
 
 struct RoundLoopResult {
   uint64_t rounds = 0;   // rounds every chain took
+  bool stopped = false;  // ended early because a rank was asked to stop
   double elapsed = 0.0;  // agreed elapsed time at the end
   // This rank's time stepping one group for one round: mean and standard deviation over the
   // render (inputs of the scaling model: compute per round and its spread).
@@ -51,7 +62,7 @@ struct RoundLoopResult {
 };
 
 RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule, RoundTransport& transport,
-                             std::vector<Film>& films, const RoundLoopHooks& hooks);
+                             std::vector<Film>& films, const RoundLoopHooks& hooks, const RoundLoopStart& start = {});
 
 // One process plays every rank (rank 0 of 1): the in-process renderer and tests.
 class LocalTransport final : public RoundTransport {

@@ -30,6 +30,20 @@ CommandResult runCommand(const std::string& command) {
   return r;
 }
 
+SignalledRun runAndSignal(const std::string& command, const std::string& log, const std::string& signal,
+                          const std::string& victim) {
+  const std::string target = victim.empty() ? "$pid" : "$(pgrep -f -n '" + victim + "')";
+  const std::string script = "(" + command + ") > " + log + " 2>&1 & pid=$!; " +
+                             "for i in $(seq 300); do grep -q elapsed " + log + " && break; sleep 0.05; done; " +
+                             "kill -" + signal + " " + target + "; t0=$(date +%s.%N); wait $pid; rc=$?; " +
+                             "echo \"seconds $(echo \"$(date +%s.%N) - $t0\" | bc)\"; cat " + log + "; exit $rc";
+  SignalledRun out;
+  out.result = runCommand(script);
+  const size_t at = out.result.output.find("seconds ");
+  if (at != std::string::npos) out.secondsAfterSignal = std::stod(out.result.output.substr(at + 8));
+  return out;
+}
+
 std::string mpirun(int ranks) {
   return "mpirun --allow-run-as-root --oversubscribe --mca pml ob1 --mca btl self,vader -np " + std::to_string(ranks) + " ";
 }

@@ -17,6 +17,16 @@ struct CommandResult {
 };
 // Runs a shell command, capturing its output and exit code.
 CommandResult runCommand(const std::string& command);
+// Runs `command` in the background (its output to `log`), waits for its first progress line
+// (at most 15 s), sends `signal` (e.g. "TERM") to the process whose command line matches the
+// pgrep pattern `victim` (empty: the command itself) and waits for the end. The result's output
+// is the log; `secondsAfterSignal` runs from the signal to the end.
+struct SignalledRun {
+  CommandResult result;
+  double secondsAfterSignal = 0.0;
+};
+SignalledRun runAndSignal(const std::string& command, const std::string& log, const std::string& signal,
+                          const std::string& victim = "");
 // mpirun with the options this machine needs (root, oversubscription, no slow transports).
 std::string mpirun(int ranks);
 

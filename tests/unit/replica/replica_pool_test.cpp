@@ -7,6 +7,7 @@
 
 #include "render/renderer.h"
 #include "replica/replica_pool.h"
+#include "replica/round_loop.h"
 #include "scene/gltf_loader.h"
 #include "test_support.h"
 
@@ -15,13 +16,13 @@ using namespace relt;
 namespace {
 
 struct Fixture {
-  Fixture() {
+  explicit Fixture(const char* scene = "scenes/cornell-box.gltf", int width = 16, int height = 12) {
     RenderSettings s;
     s.integrator = Integrator::Relt;
-    s.width = 16;
-    s.height = 12;
-    renderer = std::make_unique<Renderer>(loadGltf(test::sourcePath("scenes/cornell-box.gltf")), s);
-    eval = std::make_unique<PssEvaluator>(renderer->context(), 16, 12);
+    s.width = width;
+    s.height = height;
+    renderer = std::make_unique<Renderer>(loadGltf(test::sourcePath(scene)), s);
+    eval = std::make_unique<PssEvaluator>(renderer->context(), width, height);
     settings.ladders = 3;
     settings.family.kind = FamilyKind::Relaxed;
     settings.family.levels = 5;
@@ -61,7 +62,7 @@ TEST(ReplicaPool, TwoSimulatedRanksGiveTheLevelsAndImageOfOne) {
         const std::vector<std::vector<double>> messages = {a.roundMessage(g, 1.0, 0.0), b.roundMessage(g, 2.0, 0.0)};
         EXPECT_EQ(messages[0].size(), a.messageLength(g, 0));
         EXPECT_EQ(messages[1].size(), a.messageLength(g, 1));
-        EXPECT_EQ(a.finishRound(g, messages, r), 2.0) << "the largest elapsed time";
+        EXPECT_EQ(a.finishRound(g, messages, r).elapsed, 2.0) << "the largest elapsed time";
         b.finishRound(g, messages, r);
       }
       // Packed: each rank knows the levels of its own ladders only.
@@ -168,7 +169,35 @@ TEST(ReplicaPool, ADarkSceneRunsNoChains) {
   const std::vector<double> dark(size_t(fx.settings.bootstrap) * kPathClassCount, 0.0);
   ReplicaPool pool(*fx.eval, fx.settings, 5, dark, 0, 1);
   EXPECT_FALSE(pool.active());
-  EXPECT_EQ(pool.messageLength(0, 0), 3u);
+  EXPECT_EQ(pool.messageLength(0, 0), 4u);
+}
+
+// A stop request (a signal on some rank) ends the loop after the round every group has finished,
+// with the steps of the rounds done and nothing more; without one the budget decides.
+TEST(RoundLoop, AStopRequestEndsTheLoopAfterTheCurrentRound) {
+  Fixture fx;
+  const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+  const ReplicaSchedule schedule(16.0 * 12.0, 15, 4, std::nullopt, 64.0);  // 820 steps per chain
+  for (int askAt : {0, 7, 1000}) {
+    ReplicaPool pool(*fx.eval, fx.settings, 5, lum, 0, 1);
+    std::vector<Film> films(1, Film(16, 12));
+    LocalTransport transport;
+    int posts = 0;
+    RoundLoopHooks hooks;
+    hooks.elapsed = [] { return 0.0; };
+    hooks.stop = [&] { return posts++ >= askAt; };
+    const RoundLoopResult r = runRoundLoop(pool, schedule, transport, films, hooks);
+    if (askAt == 1000) {
+      EXPECT_FALSE(r.stopped);
+      EXPECT_EQ(r.rounds, 205u);  // 820 steps / 4 per round
+    } else {
+      EXPECT_TRUE(r.stopped);
+      // Post p is group p % 2's message of round p / 2 and carries the stop. Group 0's round
+      // p / 2 is then the last; group 1's message is read after group 0 stepped one more round.
+      EXPECT_EQ(r.rounds, uint64_t(askAt / 2 + 1 + askAt % 2)) << askAt;
+    }
+    EXPECT_GT(sum(films), 0.0);
+  }
 }
 
 // The round loop's order (group 0 steps a round before the other groups finish theirs) with a
@@ -217,4 +246,78 @@ TEST(ReplicaPool, ChainsMovedBeforeARegularisationRefreshContinueAsIfTheyHadStay
   const double s1 = sum(f1), s2 = sum(fa) + sum(fb);
   EXPECT_GT(s1, 0.0);
   EXPECT_NEAR(s1, s2, 1e-9 * s1);
+}
+
+namespace {
+
+// A render of `mpp` mutations per pixel through the round loop; with `resumeFrom` it continues
+// that checkpoint (part and film) instead of starting afresh. `checkpoint` receives the part and
+// the film at the last roundDone.
+struct LoopRun {
+  std::vector<uint64_t> part;
+  std::vector<Film> films;
+  uint64_t rounds = 0;
+  std::vector<double> normalisers;
+  std::vector<int> levels;  // every chain's at the end
+};
+
+LoopRun runLoopSized(Fixture& fx, const std::vector<double>& lum, double mpp, const LoopRun* resumeFrom, int w, int h) {
+  ReplicaPool pool(*fx.eval, fx.settings, 5, lum, 0, 1);
+  ReplicaSchedule schedule(double(w) * h, pool.chainCount(), fx.settings.exchangeInterval, std::nullopt, mpp);
+  LoopRun out;
+  out.films.assign(1, Film(w, h));
+  RoundLoopStart start;
+  if (resumeFrom) {
+    pool.restore({resumeFrom->part});
+    out.films = resumeFrom->films;
+    start.rounds = resumeFrom->rounds;
+    schedule.resumeAt(start.rounds, pool.stepsPerChain());
+  }
+  LocalTransport transport;
+  RoundLoopHooks hooks;
+  hooks.elapsed = [] { return 0.0; };
+  hooks.roundDone = [&](uint64_t rounds, double, bool more) {
+    if (more) return;
+    out.part = pool.checkpointPart();
+    out.rounds = rounds;
+  };
+  const RoundLoopResult r = runRoundLoop(pool, schedule, transport, out.films, hooks, start);
+  if (out.part.empty()) out.part = pool.checkpointPart();
+  out.rounds = r.rounds;
+  out.normalisers = pool.normalisers();
+  for (int c = 0; c < pool.chainCount(); ++c) out.levels.push_back(pool.levelOf(c));
+  return out;
+}
+
+
+}  // namespace
+
+// A render continued from its checkpoint is the render that never stopped: two groups staggered
+// (the second's collective pending at the checkpoint), the tempered family with a regularisation
+// that moves the targets (and empties the normalisers' sums) before and after the checkpoint.
+TEST(ReplicaPool, AResumedRenderIsTheRenderThatNeverStopped) {
+  for (FamilyKind kind : {FamilyKind::Relaxed, FamilyKind::Tempered}) {
+    Fixture fx("scenes/ring.gltf", 40, 30);
+    fx.settings.ladders = 2;
+    fx.settings.family.kind = kind;
+    fx.settings.family.levels = 4;
+    fx.settings.exchangeInterval = 10;
+    fx.settings.exchange.move = ExchangeMove::Deo;
+    if (kind == FamilyKind::Tempered) {
+      fx.settings.family.regularisation = 0.05;
+      fx.settings.family.regularisationDecay = 0.2;
+    }
+    const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+    // 8 chains, 1200 pixels: 4 mpp = 600 steps = 60 rounds, 8 mpp = 120 rounds.
+    const LoopRun whole = runLoopSized(fx, lum, 8.0, nullptr, 40, 30);
+    const LoopRun half = runLoopSized(fx, lum, 4.0, nullptr, 40, 30);
+    ASSERT_EQ(half.rounds, 60u);
+    const LoopRun resumed = runLoopSized(fx, lum, 8.0, &half, 40, 30);
+    EXPECT_EQ(resumed.rounds, whole.rounds);
+    EXPECT_EQ(resumed.normalisers, whole.normalisers);
+    EXPECT_EQ(resumed.levels, whole.levels) << "every chain where it would have been";
+    EXPECT_EQ(resumed.films[0].data(), whole.films[0].data()) << "bitwise: one rank, the same order of sums";
+    const LoopRun again = runLoopSized(fx, lum, 8.0, &whole, 40, 30);
+    EXPECT_EQ(again.films[0].data(), whole.films[0].data()) << "a finished render resumed does nothing more";
+  }
 }

@@ -1,0 +1,114 @@
+#include "checkpoint_io.h"
+
+#include <mpi.h>
+
+#include "checkpoint/checkpoint.h"
+#include "comm.h"
+#include "core/error.h"
+#include "core/words.h"
+
+namespace relt::mpi {
+namespace {
+
+bool isRoot() {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank == 0;
+}
+
+CheckpointTally g_tally;
+
+// The root's failure (empty: none) becomes the same InputError on every rank.
+void shareFailure(std::string problem, const std::string& file) {
+  broadcastFromRoot(problem);
+  if (!problem.empty()) throw InputError(file, "", problem);
+}
+
+}  // namespace
+
+void saveCheckpoint(const CheckpointPlan& plan, const char* integrator, const nlohmann::json& progress,
+                    const std::vector<Film>& films, const std::vector<uint64_t>& part) {
+  const double start = MPI_Wtime();
+  std::vector<std::vector<double>> sums;
+  for (const Film& f : films) {
+    sums.push_back(f.data());
+    reduceSumToRoot(sums.back());
+  }
+  const std::vector<std::vector<uint64_t>> parts = gatherToRoot(part);
+  std::string problem;
+  if (isRoot()) {
+    Checkpoint c;
+    c.header = {{"format", 1},
+                {"integrator", integrator},
+                {"ranks", parts.size()},
+                {"progress", progress},
+                {"films", sums.size()},
+                {"film_length", sums.empty() ? 0 : sums[0].size()},
+                {"identity", plan.identity},
+                {"settings", plan.settings}};
+    WordWriter w;
+    w.u64(sums.size());
+    w.u64(sums.empty() ? 0 : sums[0].size());
+    for (const std::vector<double>& s : sums) w.f64s(s);
+    w.u64(parts.size());
+    for (const std::vector<uint64_t>& p : parts) w.block(p);
+    c.words = std::move(w.words());
+    try {
+      writeCheckpoint(plan.dir, c);
+    } catch (const InputError& e) {
+      problem = e.reason() + "; the render stops here (an earlier checkpoint in " + plan.dir + " is intact)";
+    }
+  }
+  shareFailure(problem, checkpointFile(plan.dir));
+  ++g_tally.written;
+  g_tally.seconds += MPI_Wtime() - start;
+}
+
+const CheckpointTally& checkpointTally() { return g_tally; }
+
+Resumed loadCheckpoint(const CheckpointPlan& plan, const char* integrator) {
+  Resumed out;
+  out.file = checkpointFile(plan.resume);
+  std::vector<uint64_t> parts;
+  std::string problem, header;
+  if (isRoot()) {
+    try {
+      const Checkpoint c = readCheckpoint(plan.resume);
+      if (c.header.value("integrator", "") != integrator)
+        throw InputError(out.file, "", "the checkpoint is of a " + c.header.value("integrator", std::string("?")) +
+                                           " render, this one is " + integrator);
+      checkSameRender(c.header.at("identity"), plan.identity, out.file);
+      WordReader in(c.words);
+      const uint64_t count = in.u64(), length = in.u64();
+      for (uint64_t k = 0; k < count; ++k) out.films.push_back(in.f64s(length));
+      WordWriter rest;
+      for (uint64_t n = in.u64(); n > 0; --n) rest.block(in.block());
+      parts = std::move(rest.words());
+      nlohmann::json h = {{"progress", c.header.at("progress")}, {"films", count}, {"film_length", length}};
+      header = h.dump();
+    } catch (const InputError& e) {
+      problem = e.what();
+    } catch (const std::exception& e) {  // a malformed header or word stream of a valid checksum
+      problem = out.file + ": the checkpoint does not read as one (" + e.what() + ")";
+    }
+  }
+  broadcastFromRoot(problem);
+  if (!problem.empty()) throw InputError("", "", problem);
+  broadcastFromRoot(parts);
+  broadcastFromRoot(header);
+  const nlohmann::json h = nlohmann::json::parse(header);
+  out.progress = h.at("progress");
+  out.filmCount = h.at("films").get<size_t>();
+  out.filmLength = h.at("film_length").get<size_t>();
+  WordReader in(parts);
+  while (!in.done()) out.parts.push_back(in.block());
+  return out;
+}
+
+void Resumed::restoreFilms(std::vector<Film>& into) const {
+  if (filmCount != into.size() || (filmCount > 0 && filmLength != into[0].data().size()))
+    throw InputError(file, "", "the checkpoint's films do not match this render's");
+  for (size_t k = 0; k < films.size(); ++k) into[k].data() = films[k];
+}
+
+}  // namespace relt::mpi

@@ -1,0 +1,47 @@
+#pragma once
+// Checkpoints over MPI (the format and its decisions are in src/checkpoint): films reduced onto
+// the root, every rank's state gathered there and written by the root; read back by the root,
+// checked against this render, and shared with every rank. Collective; a failure throws the same
+// InputError on every rank.
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "film/film.h"
+
+namespace relt::mpi {
+
+struct CheckpointPlan {
+  std::string dir;          // --checkpoint: where to write ("" = never)
+  double every = 0.0;       // --checkpoint-every seconds (0: only when the render ends)
+  std::string resume;       // --resume: the checkpoint to continue ("" = start afresh)
+  nlohmann::json identity;  // imageIdentity() of this render
+  nlohmann::json settings;  // this render's settings, for the reader of the file
+};
+
+struct Resumed {
+  std::string file;                          // the checkpoint read
+  nlohmann::json progress;                   // how far the render got (the integrator's keys)
+  size_t filmCount = 0, filmLength = 0;      // every rank knows them
+  std::vector<std::vector<double>> films;    // the root: the reduced films; other ranks: none
+  std::vector<std::vector<uint64_t>> parts;  // every rank: every rank's part, in the rank order of then
+  // Puts the reduced films into the root's `films` (the other ranks' stay empty to add to them);
+  // throws InputError on every rank if their number or size differs.
+  void restoreFilms(std::vector<Film>& films) const;
+};
+
+// `progress` is the integrator's (rounds or passes, elapsed time, ...); `part` this rank's state.
+void saveCheckpoint(const CheckpointPlan& plan, const char* integrator, const nlohmann::json& progress,
+                    const std::vector<Film>& films, const std::vector<uint64_t>& part);
+// Checkpoints this process wrote (or took part in) and the seconds they took, for stats.json.
+struct CheckpointTally {
+  int written = 0;
+  double seconds = 0.0;
+};
+const CheckpointTally& checkpointTally();
+
+// Refuses a checkpoint of another integrator, scene or settings (before any rendering work).
+Resumed loadCheckpoint(const CheckpointPlan& plan, const char* integrator);
+
+}  // namespace relt::mpi

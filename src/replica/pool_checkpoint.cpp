@@ -1,0 +1,172 @@
+// ReplicaPool's checkpoint part and its restore (see replica_pool.h).
+#include <stdexcept>
+
+#include "core/words.h"
+#include "replica/replica_pool.h"
+
+namespace relt {
+namespace {
+
+constexpr uint64_t kPartVersion = 1;
+
+void writeCounters(WordWriter& w, const LevelCounters& c) {
+  for (uint64_t v : {c.smallProposed, c.smallAccepted, c.largeProposed, c.largeAccepted, c.invalidProposals, c.nonFinite})
+    w.u64(v);
+  w.f64(c.largeTargetSum);
+  w.f64(c.seconds);
+}
+
+LevelCounters readCounters(WordReader& in) {
+  LevelCounters c;
+  for (uint64_t* v : {&c.smallProposed, &c.smallAccepted, &c.largeProposed, &c.largeAccepted, &c.invalidProposals,
+                      &c.nonFinite})
+    *v = in.u64();
+  c.largeTargetSum = in.f64();
+  c.seconds = in.f64();
+  return c;
+}
+
+void writeTally(WordWriter& w, const ExchangeTally& t) {
+  for (const std::vector<uint64_t>* v : {&t.proposed, &t.accepted, &t.changed})
+    for (uint64_t x : *v) w.u64(x);
+  w.u64(t.rounds);
+}
+
+ExchangeTally readTally(WordReader& in, int m) {
+  ExchangeTally t(m);
+  for (std::vector<uint64_t>* v : {&t.proposed, &t.accepted, &t.changed})
+    for (uint64_t& x : *v) x = in.u64();
+  t.rounds = in.u64();
+  return t;
+}
+
+struct ChainRecord {
+  bool found = false;
+  uint8_t phase = 0;
+  bool owesRefresh = false;
+  std::vector<uint64_t> state;
+};
+
+}  // namespace
+
+std::vector<uint64_t> ReplicaPool::checkpointPart() const {
+  const int m = levels();
+  WordWriter w;
+  for (uint64_t v : {kPartVersion, uint64_t(m), uint64_t(groups()), uint64_t(chainCount()), uint64_t(localDecisions())})
+    w.u64(v);
+  w.u64(stepsPerChain_);
+  w.u64(epoch_);
+  w.f64(family_.regularisationFloor());
+  w.f64s(bootstrapSum_);  // emptied when the regularisation moves
+  w.f64(bootstrapCount_);
+  w.f64s(largeSum_);
+  w.f64(largeCount_);
+  w.f64s(estimator_.normalisers());
+  writeTally(w, tally_);
+  w.u64(trips_.total());
+  for (const LevelCounters& c : hostedCounters()) writeCounters(w, c);
+  for (const LargeStepSums& posted : postedLarge_) {
+    w.f64s(posted.sum);
+    w.u64(posted.count);
+  }
+  w.u64(chains_.size());
+  for (size_t i = 0; i < chains_.size(); ++i) {
+    const int c = hosted()[i];
+    w.u64(uint64_t(c));
+    w.u64(trips_.phase(c));
+    w.u64(epochOf_[size_t(c)] == epoch_ ? 0 : 1);
+    w.block(chains_[i].serialize());
+  }
+  return w.words();
+}
+
+void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
+  const int m = levels();
+  if (parts.empty()) throw std::runtime_error("the checkpoint holds no replica state");
+  ExchangeTally tally(m);
+  uint64_t trips = 0;
+  std::vector<LevelCounters> counters(static_cast<size_t>(m));
+  std::vector<std::vector<LargeStepSums>> posted(parts.size());
+  std::vector<ChainRecord> records(static_cast<size_t>(chainCount()));
+  for (size_t r = 0; r < parts.size(); ++r) {
+    WordReader in(parts[r]);
+    for (uint64_t v : {kPartVersion, uint64_t(m), uint64_t(groups()), uint64_t(chainCount())})
+      if (in.u64() != v) throw std::runtime_error("the checkpoint's ladders are not this render's");
+    const bool local = in.u64() != 0;
+    const uint64_t steps = in.u64(), epoch = in.u64();
+    const double floor = in.f64();
+    std::vector<double> bootstrapSum = in.f64s(size_t(m));
+    const double bootstrapCount = in.f64();
+    std::vector<double> largeSum = in.f64s(size_t(m));
+    const double largeCount = in.f64();
+    const std::vector<double> b = in.f64s(size_t(m));
+    const ExchangeTally t = readTally(in, m);
+    const uint64_t partTrips = in.u64();
+    if (r == 0) {  // the same on every rank
+      stepsPerChain_ = steps;
+      epoch_ = epoch;
+      family_.restoreRegularisationFloor(float(floor));
+      bootstrapSum_ = std::move(bootstrapSum);
+      bootstrapCount_ = bootstrapCount;
+      largeSum_ = std::move(largeSum);
+      largeCount_ = largeCount;
+      estimator_.setNormalisers(b);
+    }
+    // Tallies and trips: each rank's own ladders with local decisions, otherwise all on every rank.
+    if (local || r == 0) {
+      tally.add(t);
+      trips += partTrips;
+    }
+    for (int k = 0; k < m; ++k) counters[size_t(k)].add(readCounters(in));
+    for (int g = 0; g < groups(); ++g) {
+      LargeStepSums& s = posted[r].emplace_back(m);
+      s.sum = in.f64s(size_t(m));
+      s.count = in.u64();
+    }
+    for (uint64_t n = in.u64(); n > 0; --n) {
+      const uint64_t c = in.u64();
+      if (c >= records.size() || records[c].found) throw std::runtime_error("the checkpoint's chains are not this render's");
+      ChainRecord& rec = records[c];
+      rec.found = true;
+      rec.phase = uint8_t(in.u64());
+      rec.owesRefresh = in.u64() != 0;
+      rec.state = in.block();
+      if (rec.state.size() < 3) throw std::runtime_error("truncated chain state");
+    }
+    if (!in.done()) throw std::runtime_error("the checkpoint's replica state has trailing data");
+  }
+  for (const ChainRecord& rec : records)
+    if (!rec.found) throw std::runtime_error("the checkpoint misses chains");
+
+  messageEpoch_.assign(size_t(groups()), epoch_);
+  for (int c = 0; c < chainCount(); ++c) {
+    const ChainRecord& rec = records[size_t(c)];
+    levelOf_[size_t(c)] = int(rec.state[2]);  // ReplicaChain::serialize: rng state, increment, level, ...
+    epochOf_[size_t(c)] = rec.owesRefresh ? epoch_ - 1 : epoch_;
+    if (!localDecisions() || hosts(c)) trips_.setPhase(c, rec.phase);
+  }
+  chains_.clear();
+  for (int c : hosted()) chains_.emplace_back(records[size_t(c)].state, family_, evaluator_);
+  reindex();
+  if (!localDecisions() || rank_ == 0) {
+    tally_ = tally;
+    trips_.addEarlier(trips);
+  }
+  if (rank_ == 0) departed_ = counters;  // the counters of everything before, counted once
+  // The pending messages' large-step sums: each rank its own with the same rank count, otherwise
+  // all on the root (the sum is the same up to rounding).
+  for (int g = 1; g < groups(); ++g) {
+    LargeStepSums& mine = pendingLarge_[size_t(g)];
+    mine = LargeStepSums(m);
+    if (parts.size() == size_t(ranks_)) {
+      mine = posted[size_t(rank_)][size_t(g)];
+    } else if (rank_ == 0) {
+      for (const std::vector<LargeStepSums>& p : posted) {
+        for (int k = 0; k < m; ++k) mine.sum[size_t(k)] += p[size_t(g)].sum[size_t(k)];
+        mine.count += p[size_t(g)].count;
+      }
+    }
+  }
+}
+
+}  // namespace relt

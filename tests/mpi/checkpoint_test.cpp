@@ -1,0 +1,199 @@
+// Checkpoints and resume: a render continued from its checkpoint gives the image of the render
+// that never stopped, on the same rank count (identical) or another (1e-5 relative); whether it
+// stopped at its budget, by SIGTERM, or because a rank was killed. A checkpoint of another scene,
+// other settings or another integrator is refused, as is a damaged one. Output safety: a full
+// disk is reported without partial files, a read-only output folder fails before rendering.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
+#include "image/image.h"
+#include "test_support.h"
+
+using namespace relt;
+using namespace relt::test;
+
+namespace {
+
+const std::string kRelt =
+    "--integrator relt --ladders 2 --family tempered --levels 4 --regularisation 0.05 --regularisation-decay 0.2 "
+    "--exchange-interval 10 --width 40 --height 30 --seed 5";
+
+// relt render of `scene` with `args`; the exit code is checked unless `expectFailure`.
+CommandResult render(int ranks, const std::string& scene, const std::string& args, bool expectFailure = false) {
+  const CommandResult r = runCommand((ranks > 0 ? mpirun(ranks) : std::string()) + reltBinary() + " render " +
+                                     sourcePath("scenes/" + scene + ".gltf") + " " + args);
+  if (!expectFailure) EXPECT_EQ(r.exitCode, 0) << r.output;
+  return r;
+}
+
+// kRelt with one option's value replaced.
+std::string reltWith(const std::string& option, const std::string& value) {
+  std::string args = kRelt;
+  const size_t at = args.find(option + " ");
+  const size_t end = args.find(' ', at + option.size() + 1);
+  return args.replace(at, end == std::string::npos ? std::string::npos : end - at, option + " " + value);
+}
+
+void expectIdentical(const Image& a, const Image& b) {
+  ASSERT_EQ(a.rgb.size(), b.rgb.size());
+  EXPECT_TRUE(a.rgb == b.rgb) << "not bitwise identical";
+  EXPECT_GT(a.mean(), 0.0);
+}
+
+}  // namespace
+
+// relt on ring (mirrors: the tempered levels differ; the regularisation moves the targets before
+// and after the checkpoint): 4 then 8 mutations per pixel, stopped at the first budget with a
+// checkpoint, resumed to the second. 8 chains x 10 steps a round: both budgets end on a round.
+TEST(Checkpoint, ReltResumedIsTheRenderThatNeverStoppedOnAnyRankCount) {
+  const std::string dir = makeTempDir("checkpoint-relt");
+  render(2, "ring", "-o " + dir + "/whole.exr --mutations-per-pixel 8 " + kRelt);
+  render(2, "ring", "-o " + dir + "/half.exr --mutations-per-pixel 4 --checkpoint " + dir + "/ck " + kRelt);
+  ASSERT_TRUE(fileExists(dir + "/ck/checkpoint.relt"));
+  const Image whole = readExr(dir + "/whole.exr");
+  for (int ranks : {2, 1, 3}) {
+    const std::string out = dir + "/resumed" + std::to_string(ranks) + ".exr";
+    render(ranks, "ring", "-o " + out + " --mutations-per-pixel 8 --resume " + dir + "/ck " + kRelt);
+    if (ranks == 2)
+      expectIdentical(readExr(out), whole);
+    else
+      expectSameImage(readExr(out), whole);
+  }
+}
+
+// pt and bdpt: the checkpoint is the film and the passes done.
+TEST(Checkpoint, PtAndBdptResumedAreTheRendersThatNeverStopped) {
+  for (const std::string integrator : {"pt", "bdpt"}) {
+    const std::string dir = makeTempDir("checkpoint-" + integrator);
+    const std::string common = " --integrator " + integrator + " --width 40 --height 30 --seed 3";
+    render(2, "cornell-box", "-o " + dir + "/whole.exr --spp 6" + common);
+    render(2, "cornell-box", "-o " + dir + "/half.exr --spp 2 --checkpoint " + dir + "/ck" + common);
+    render(2, "cornell-box", "-o " + dir + "/same.exr --spp 6 --resume " + dir + "/ck" + common);
+    render(1, "cornell-box", "-o " + dir + "/other.exr --spp 6 --resume " + dir + "/ck" + common);
+    const Image whole = readExr(dir + "/whole.exr");
+    expectIdentical(readExr(dir + "/same.exr"), whole);
+    expectSameImage(readExr(dir + "/other.exr"), whole);
+  }
+}
+
+// SIGTERM mid-render (to mpirun, which forwards it): every rank stops at the next round, writes
+// the image so far and a checkpoint; resuming it finishes the uninterrupted image. A rank killed
+// with -9 leaves the last periodic checkpoint, which resumes just as well.
+TEST(Checkpoint, ACheckpointLeftBySigtermOrAKilledRankResumesToTheUninterruptedImage) {
+  const std::string dir = makeTempDir("checkpoint-stopped");
+  const std::string args = " --integrator relt --ladders 2 --exchange-interval 16 --width 64 --height 64 --seed 9 "
+                           "--mutations-per-pixel 400 ";
+  render(2, "cornell-box", "-o " + dir + "/whole.exr" + args);
+  const Image whole = readExr(dir + "/whole.exr");
+  for (const std::string signal : {"TERM", "KILL"}) {
+    const std::string ck = dir + "/ck-" + signal, out = dir + "/stopped-" + signal + ".exr";
+    const std::string victim = signal == "KILL" ? "^" + reltBinary() + " render .*" + out : "";
+    const SignalledRun run = runAndSignal(mpirun(2) + reltBinary() + " render " + sourcePath("scenes/cornell-box.gltf") +
+                                              " -o " + out + args + "--checkpoint " + ck + " --checkpoint-every 0.2",
+                                          dir + "/log-" + signal + ".txt", signal, victim);
+    EXPECT_LT(run.secondsAfterSignal, 10.0) << run.result.output;
+    if (signal == "TERM") {
+      EXPECT_NE(run.result.output.find("stopped early by a signal"), std::string::npos) << run.result.output;
+      EXPECT_TRUE(fileExists(out));
+    } else {
+      EXPECT_NE(run.result.exitCode, 0);
+      EXPECT_FALSE(fileExists(out));
+    }
+    ASSERT_TRUE(fileExists(ck + "/checkpoint.relt")) << run.result.output;
+    for (const auto& e : std::filesystem::directory_iterator(ck))
+      EXPECT_EQ(e.path().filename(), "checkpoint.relt") << "no temporary file left behind";
+    const std::string resumed = dir + "/resumed-" + signal + ".exr";
+    render(2, "cornell-box", "-o " + resumed + args + "--resume " + ck);
+    expectIdentical(readExr(resumed), whole);
+  }
+}
+
+// What cannot be continued is refused before any work, with one line naming the checkpoint.
+TEST(Checkpoint, AForeignOrDamagedCheckpointIsRefused) {
+  const std::string dir = makeTempDir("checkpoint-refused");
+  const std::string ck = dir + "/ck";
+  render(0, "ring", "-o " + dir + "/a.exr --mutations-per-pixel 1 --checkpoint " + ck + " " + kRelt);
+  struct Case {
+    std::string scene, args, mentions;
+  };
+  const std::vector<Case> cases = {
+      {"ring", reltWith("--seed", "6"), "rendered with seed 5, this render has 6"},
+      {"ring", reltWith("--levels", "5"), "rendered with levels 4, this render has 5"},
+      {"cornell-box", kRelt, "another scene"},
+      {"ring", "--integrator bdpt --width 40 --height 30 --seed 5", "is of a relt render, this one is bdpt"},
+      {"ring", reltWith("--width", "41"), "rendered with width 40"},
+  };
+  for (const Case& c : cases) {
+    // Two ranks once (every rank must give up together), otherwise one process (mpirun is slow).
+    const int ranks = &c == &cases.front() ? 2 : 0;
+    const CommandResult r = render(ranks, c.scene, "-o " + dir + "/b.exr --resume " + ck + " " + c.args, true);
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find(c.mentions), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find(ck + "/checkpoint.relt"), std::string::npos) << r.output;
+    EXPECT_FALSE(fileExists(dir + "/b.exr"));
+  }
+  // Cut short, or one byte changed: the checksum says so.
+  const std::string file = ck + "/checkpoint.relt";
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  for (const std::string& damaged : {bytes.substr(0, bytes.size() / 2), bytes.substr(0, 100) + "x" + bytes.substr(101)}) {
+    std::ofstream(file, std::ios::binary) << damaged;
+    const CommandResult r = render(0, "ring", "-o " + dir + "/c.exr --resume " + ck + " " + kRelt, true);
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("checkpoint is damaged"), std::string::npos) << r.output;
+    EXPECT_FALSE(fileExists(dir + "/c.exr"));
+  }
+  const CommandResult missing = render(0, "ring", "-o " + dir + "/d.exr --resume " + dir + "/none " + kRelt, true);
+  EXPECT_EQ(missing.exitCode, 2);
+  EXPECT_NE(missing.output.find("no checkpoint to resume"), std::string::npos) << missing.output;
+}
+
+// A full disk (a 16 KiB tmpfs in a private mount namespace): the image or the checkpoint that does
+// not fit is reported with exit 2 and leaves no partial file.
+TEST(Checkpoint, AFullDiskIsReportedAndLeavesNoPartialFile) {
+  const std::string dir = makeTempDir("checkpoint-full");
+  const std::string full = dir + "/full";
+  std::filesystem::create_directories(full);
+  if (runCommand("unshare -m true").exitCode != 0) GTEST_SKIP() << "no mount namespaces here";
+  auto inFullDisk = [&](const std::string& args) {
+    return runCommand("unshare -m sh -c 'mount -t tmpfs -o size=16k tmpfs " + full + " && " + reltBinary() +
+                      " render " + sourcePath("scenes/ring.gltf") + " " + args + "; rc=$?; echo left:; ls -A " + full +
+                      "; exit $rc'");
+  };
+  const CommandResult image = inFullDisk("-o " + full + "/out.exr --spp 1 --width 128 --height 128");
+  EXPECT_EQ(image.exitCode, 2) << image.output;
+  EXPECT_NE(image.output.find("No space left on device"), std::string::npos) << image.output;
+  EXPECT_EQ(image.output.find(".tmp", image.output.find("left:")), std::string::npos) << "a leftover: " << image.output;
+  const CommandResult checkpoint =
+      inFullDisk("-o " + dir + "/out.exr --mutations-per-pixel 4 --checkpoint " + full + " " + kRelt);
+  EXPECT_EQ(checkpoint.exitCode, 2) << checkpoint.output;
+  EXPECT_NE(checkpoint.output.find("checkpoint.relt: write failed"), std::string::npos) << checkpoint.output;
+  EXPECT_FALSE(fileExists(dir + "/out.exr"));
+}
+
+// A read-only folder (a read-only tmpfs: root ignores permission bits, not a read-only mount) for
+// the image or the checkpoint is refused before rendering: a render that would take minutes fails
+// at once.
+TEST(Checkpoint, AReadOnlyOutputFolderFailsBeforeRendering) {
+  const std::string dir = makeTempDir("checkpoint-readonly");
+  const std::string ro = dir + "/ro";
+  std::filesystem::create_directories(ro);
+  if (runCommand("unshare -m true").exitCode != 0) GTEST_SKIP() << "no mount namespaces here";
+  for (const std::string& outputs : {"-o " + ro + "/out.exr", "-o " + dir + "/out.exr --checkpoint " + ro}) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const CommandResult r = runCommand("unshare -m sh -c 'mount -t tmpfs -o ro tmpfs " + ro + " && " + reltBinary() +
+                                       " render " + sourcePath("scenes/cornell-box.gltf") + " " + outputs +
+                                       " --spp 100000 --width 256 --height 256'");
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("not writable"), std::string::npos) << r.output;
+    EXPECT_LT(seconds, 10.0) << "refused before rendering";
+    EXPECT_FALSE(fileExists(dir + "/out.exr"));
+  }
+}
