@@ -7,6 +7,7 @@
 
 #include <climits>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numeric>
 #include <regex>
@@ -304,6 +305,19 @@ LocalPrimitive readPrimitive(const Context& ctx, const AccessorReader& reader, c
 // Places one primitive in the world. Normals go through the cofactor matrix, which equals
 // det * inverse-transpose and stays defined for singular transforms; with det < 0 the winding is
 // flipped so that the front face stays the front face.
+constexpr const char* kWorldLimitText =
+    "+-1e15, where single-precision distances overflow (rescale the scene, e.g. with a root node scale)";
+
+bool withinWorld(const glm::dvec3& p) {
+  return std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate && std::abs(p.z) <= kMaxCoordinate;
+}
+
+std::string formatPoint(const glm::dvec3& p) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", p.x, p.y, p.z);
+  return text;
+}
+
 void instancePrimitive(const Context& ctx, const LocalPrimitive& prim, const glm::dmat4& world, uint32_t material,
                        const std::string& element, Scene* scene) {
   const glm::dmat3 a(world);
@@ -318,6 +332,9 @@ void instancePrimitive(const Context& ctx, const LocalPrimitive& prim, const glm
     const glm::dvec3 p = glm::dvec3(world * glm::dvec4(glm::dvec3(prim.positions[v]), 1.0));
     const Vec3 pf(p);
     if (!isFinite(pf)) ctx.fail(element, "its world transform moves vertices to infinity");
+    if (!withinWorld(p))
+      ctx.fail(element, "vertex " + std::to_string(v) + " lies at " + formatPoint(p) + " in world space, beyond " +
+                            kWorldLimitText);
     scene->positions.push_back(pf);
     Vec3 n(0.0f);
     if (!prim.normals.empty() && prim.normals[v] != Vec3(0.0f)) {
@@ -449,6 +466,8 @@ Scene loadGltf(const std::string& path) {
                                                       : "camera" + std::to_string(scene.cameras.size());
         cam.name = uniqueName(base, cameraNames);
         cameraNames.insert(cam.name);
+        if (!withinWorld(glm::dvec3(placed.world[3])))
+          ctx.fail(element, "its camera lies at " + formatPoint(glm::dvec3(placed.world[3])) + ", beyond " + kWorldLimitText);
         cam.position = Vec3(glm::dvec3(placed.world[3]));
         cam.toWorld = *frame;
         cam.yfov = static_cast<float>(decl.yfov);
@@ -465,6 +484,8 @@ Scene loadGltf(const std::string& path) {
         light.name = !decl.name.empty()   ? decl.name
                      : !node.name.empty() ? node.name
                                           : "light" + std::to_string(scene.punctualLights.size());
+        if (!withinWorld(glm::dvec3(placed.world[3])))
+          ctx.fail(element, "its light lies at " + formatPoint(glm::dvec3(placed.world[3])) + ", beyond " + kWorldLimitText);
         light.position = Vec3(glm::dvec3(placed.world[3]));
         light.intensity = decl.intensity;
         if (decl.type == "spot") {

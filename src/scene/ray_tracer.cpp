@@ -17,9 +17,12 @@ void embreeError(void*, RTCError code, const char* message) {
 // Embree requires finite origins and directions (Debian's build asserts it): a ray made of a NaN
 // or infinite number (a degenerate sample) hits nothing and its shadow ray is blocked, so the
 // sample contributes nothing instead of ending the process.
-bool finiteRay(const Vec3& o, const Vec3& d) {
-  const float sum = o.x + o.y + o.z + d.x + d.y + d.z;
-  return sum - sum == 0.0f;  // NaN or infinite if any term is
+// Rays Embree accepts (its RayK::valid: finite, components within 1.8e18). The loader keeps the
+// scene within 1e15, so only a broken sample makes one, which then hits nothing.
+bool traceableRay(const Vec3& o, const Vec3& d) {
+  constexpr float kLarge = 1.8e18f;
+  const Vec3 a = glm::max(glm::abs(o), glm::abs(d));
+  return a.x <= kLarge && a.y <= kLarge && a.z <= kLarge;  // false for NaN too
 }
 
 }  // namespace
@@ -105,7 +108,7 @@ SurfacePoint RayTracer::surfacePoint(uint32_t t, float b1, float b2) const {
 
 bool RayTracer::intersect(const Ray& ray, SurfacePoint& hit, float& distance) const {
   ++rays_;
-  if (!finiteRay(ray.origin, ray.dir) || std::isnan(ray.tMax)) return false;
+  if (!traceableRay(ray.origin, ray.dir) || std::isnan(ray.tMax)) return false;
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
   RTCRayHit rh;
@@ -132,7 +135,7 @@ bool RayTracer::intersect(const Ray& ray, SurfacePoint& hit, float& distance) co
 
 namespace {
 bool occludedRay(RTCScene scene, const Vec3& o, const Vec3& d, float tfar) {
-  if (!finiteRay(o, d) || !(tfar >= 0.0f)) return true;
+  if (!traceableRay(o, d) || !(tfar >= 0.0f)) return true;
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
   RTCRay r;

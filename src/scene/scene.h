@@ -36,6 +36,10 @@ struct PunctualLight {
 // Limits of the render settings, from the scene or the command line.
 inline constexpr int kMaxImageSide = 16384;
 inline constexpr int kMaxDepth = 256;
+// World-space coordinates (vertices after their transforms, cameras, lights) must lie within
+// +-kMaxCoordinate: beyond it squared distances and the products of MIS weights overflow single
+// precision (and Embree rejects rays whose origin exceeds 1.8e18).
+inline constexpr double kMaxCoordinate = 1e15;
 
 // Render settings a scene may carry in its scene-level `extras` (see README, "Scene format").
 struct RenderDefaults {

@@ -894,3 +894,28 @@ TEST_F(Synthesised, InstancingBeyondMemoryIsRefusedBeforeBuilding) {
 }
 
 }  // namespace relt::test
+
+namespace relt::test {
+
+// Coordinates beyond 1e15 overflow single-precision distances (and Embree refuses rays from
+// there): found by fuzzing a scene whose buffer bytes were changed. Vertices (here moved by a
+// node's scale), cameras and lights alike.
+TEST_F(Synthesised, CoordinatesBeyondTheWorldLimitAreRefused) {
+  GltfBuilder b;
+  const int mesh = b.triangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  b.node({{"mesh", mesh}, {"scale", {2e15, 1, 1}}});
+  b.scene({0});
+  EXPECT_TRUE(contains(loadError(b.finish()), "nodes[0]: vertex 1 lies at (2e+15, 0, 0) in world space, beyond +-1e15"));
+  GltfBuilder c;
+  c.camera();
+  c.node({{"camera", 0}, {"translation", {0, -3e16, 0}}});
+  c.scene({0});
+  EXPECT_TRUE(contains(loadError(c.finish()), "nodes[0]: its camera lies at (0, -3e+16, 0)"));
+  GltfBuilder edge;
+  const int m = edge.triangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  edge.node({{"mesh", m}, {"scale", {1e15, 1, 1}}});
+  edge.scene({0});
+  EXPECT_EQ(load(edge.finish()).bounds.hi.x, 1e15f) << "the limit itself is inside";
+}
+
+}  // namespace relt::test
