@@ -14,15 +14,16 @@ void embreeError(void*, RTCError code, const char* message) {
                            (message ? message : ""));
 }
 
-// Embree requires finite origins and directions (Debian's build asserts it): a ray made of a NaN
-// or infinite number (a degenerate sample) hits nothing and its shadow ray is blocked, so the
-// sample contributes nothing instead of ending the process.
-// Rays Embree accepts (its RayK::valid: finite, components within 1.8e18). The loader keeps the
-// scene within 1e15, so only a broken sample makes one, which then hits nothing.
+// Embree requires rays it calls valid (RayK::valid: every origin and direction component finite
+// and within 1.8e18; Debian's build asserts it). The loader keeps the scene within 1e15, so only a
+// degenerate sample (a NaN or infinite number) makes another one: it hits nothing and its shadow
+// ray is blocked, so the sample contributes nothing instead of ending the process.
 bool traceableRay(const Vec3& o, const Vec3& d) {
   constexpr float kLarge = 1.8e18f;
-  const Vec3 a = glm::max(glm::abs(o), glm::abs(d));
-  return a.x <= kLarge && a.y <= kLarge && a.z <= kLarge;  // false for NaN too
+  auto within = [](const Vec3& v) {  // false for NaN too
+    return std::abs(v.x) <= kLarge && std::abs(v.y) <= kLarge && std::abs(v.z) <= kLarge;
+  };
+  return within(o) && within(d);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // double-precision ray-triangle test over all triangles.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <optional>
 
 #include "core/rng.h"
@@ -82,5 +83,24 @@ TEST(RayTracer, ClosestHitsAndOcclusionMatchBruteForce) {
     }
     EXPECT_GT(hits, 1000) << name;
     EXPECT_LT(mismatched, 3) << name;
+  }
+}
+
+// Rays Embree would reject (a NaN or infinite component, or one beyond its 1.8e18 limit, in the
+// origin or the direction alone) miss everything instead of tripping Embree's assertion, which
+// ends the process; a shadow ray towards such a point must not trip it either (what it answers
+// does not matter: the sample is dropped as non-finite).
+TEST(RayTracer, RaysEmbreeWouldRejectMissInsteadOfAborting) {
+  const Scene s = load("cornell-box");
+  const RayTracer tracer(s);
+  const Vec3 inside = 0.5f * (s.bounds.lo + s.bounds.hi);
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const Vec3 bad[] = {Vec3(nan, 0, 0), Vec3(0, INFINITY, 0), Vec3(0, 0, -2e18f)};
+  for (const Vec3& b : bad) {
+    SurfacePoint sp;
+    float dist = 0.0f;
+    EXPECT_FALSE(tracer.intersect(Ray{inside, b, INFINITY}, sp, dist)) << "direction " << b.x << " " << b.y << " " << b.z;
+    EXPECT_FALSE(tracer.intersect(Ray{b, Vec3(0, 1, 0), INFINITY}, sp, dist)) << "origin " << b.x << " " << b.y << " " << b.z;
+    tracer.occludedToPoint(inside, Vec3(0, 1, 0), inside + b);
   }
 }
