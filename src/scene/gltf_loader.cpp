@@ -305,17 +305,16 @@ LocalPrimitive readPrimitive(const Context& ctx, const AccessorReader& reader, c
 // Places one primitive in the world. Normals go through the cofactor matrix, which equals
 // det * inverse-transpose and stays defined for singular transforms; with det < 0 the winding is
 // flipped so that the front face stays the front face.
-constexpr const char* kWorldLimitText =
-    "+-1e15, where single-precision distances overflow (rescale the scene, e.g. with a root node scale)";
-
-bool withinWorld(const glm::dvec3& p) {
-  return std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate && std::abs(p.z) <= kMaxCoordinate;
-}
-
-std::string formatPoint(const glm::dvec3& p) {
-  char text[96];
-  std::snprintf(text, sizeof text, "(%.4g, %.4g, %.4g)", p.x, p.y, p.z);
-  return text;
+// A world-space position as a Vec3, or a failure naming `what` ("vertex 3", "its camera") when it
+// lies beyond +-kMaxCoordinate.
+Vec3 worldPosition(const Context& ctx, const glm::dvec3& p, const std::string& element, const std::string& what) {
+  if (!(std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate && std::abs(p.z) <= kMaxCoordinate)) {
+    char point[96];
+    std::snprintf(point, sizeof point, "(%.4g, %.4g, %.4g)", p.x, p.y, p.z);
+    ctx.fail(element, what + " lies at " + point + " in world space, beyond +-1e15, where single-precision " +
+                          "distances overflow (rescale the scene, e.g. with a root node scale)");
+  }
+  return Vec3(p);
 }
 
 void instancePrimitive(const Context& ctx, const LocalPrimitive& prim, const glm::dmat4& world, uint32_t material,
@@ -330,12 +329,8 @@ void instancePrimitive(const Context& ctx, const LocalPrimitive& prim, const glm
   if (base + prim.positions.size() > UINT32_MAX) ctx.fail(element, "the scene has too many vertices after instancing");
   for (size_t v = 0; v < prim.positions.size(); ++v) {
     const glm::dvec3 p = glm::dvec3(world * glm::dvec4(glm::dvec3(prim.positions[v]), 1.0));
-    const Vec3 pf(p);
-    if (!isFinite(pf)) ctx.fail(element, "its world transform moves vertices to infinity");
-    if (!withinWorld(p))
-      ctx.fail(element, "vertex " + std::to_string(v) + " lies at " + formatPoint(p) + " in world space, beyond " +
-                            kWorldLimitText);
-    scene->positions.push_back(pf);
+    if (!isFinite(Vec3(p))) ctx.fail(element, "its world transform moves vertices to infinity");
+    scene->positions.push_back(worldPosition(ctx, p, element, "vertex " + std::to_string(v)));
     Vec3 n(0.0f);
     if (!prim.normals.empty() && prim.normals[v] != Vec3(0.0f)) {
       const glm::dvec3 t = cofactor * glm::dvec3(prim.normals[v]);
@@ -466,9 +461,7 @@ Scene loadGltf(const std::string& path) {
                                                       : "camera" + std::to_string(scene.cameras.size());
         cam.name = uniqueName(base, cameraNames);
         cameraNames.insert(cam.name);
-        if (!withinWorld(glm::dvec3(placed.world[3])))
-          ctx.fail(element, "its camera lies at " + formatPoint(glm::dvec3(placed.world[3])) + ", beyond " + kWorldLimitText);
-        cam.position = Vec3(glm::dvec3(placed.world[3]));
+        cam.position = worldPosition(ctx, glm::dvec3(placed.world[3]), element, "its camera");
         cam.toWorld = *frame;
         cam.yfov = static_cast<float>(decl.yfov);
         if (decl.aspect) cam.aspect = static_cast<float>(*decl.aspect);
@@ -484,9 +477,7 @@ Scene loadGltf(const std::string& path) {
         light.name = !decl.name.empty()   ? decl.name
                      : !node.name.empty() ? node.name
                                           : "light" + std::to_string(scene.punctualLights.size());
-        if (!withinWorld(glm::dvec3(placed.world[3])))
-          ctx.fail(element, "its light lies at " + formatPoint(glm::dvec3(placed.world[3])) + ", beyond " + kWorldLimitText);
-        light.position = Vec3(glm::dvec3(placed.world[3]));
+        light.position = worldPosition(ctx, glm::dvec3(placed.world[3]), element, "its light");
         light.intensity = decl.intensity;
         if (decl.type == "spot") {
           const glm::dvec3 axis = -glm::dvec3(placed.world[2]);  // lights shine down their local -Z
