@@ -40,13 +40,6 @@ ExchangeTally readTally(WordReader& in, int m) {
   return t;
 }
 
-struct ChainRecord {
-  bool found = false;
-  uint8_t phase = 0;
-  bool owesRefresh = false;
-  std::vector<uint64_t> state;
-};
-
 }  // namespace
 
 std::vector<uint64_t> ReplicaPool::checkpointPart() const {
@@ -70,12 +63,9 @@ std::vector<uint64_t> ReplicaPool::checkpointPart() const {
     w.u64(posted.count);
   }
   w.u64(chains_.size());
-  for (size_t i = 0; i < chains_.size(); ++i) {
-    const int c = hosted()[i];
+  for (int c : hosted()) {
     w.u64(uint64_t(c));
-    w.u64(trips_.phase(c));
-    w.u64(epochOf_[size_t(c)] == epoch_ ? 0 : 1);
-    w.block(chains_[i].serialize());
+    w.block(travellingChain(c));
   }
   return w.words();
 }
@@ -87,7 +77,7 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
   uint64_t trips = 0;
   std::vector<LevelCounters> counters(static_cast<size_t>(m));
   std::vector<std::vector<LargeStepSums>> posted(parts.size());
-  std::vector<ChainRecord> records(static_cast<size_t>(chainCount()));
+  std::vector<std::vector<uint64_t>> records(static_cast<size_t>(chainCount()));  // travellingChain() of each
   for (size_t r = 0; r < parts.size(); ++r) {
     WordReader in(parts[r]);
     for (uint64_t v : {kPartVersion, uint64_t(m), uint64_t(groups()), uint64_t(chainCount())})
@@ -125,28 +115,22 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
     }
     for (uint64_t n = in.u64(); n > 0; --n) {
       const uint64_t c = in.u64();
-      if (c >= records.size() || records[c].found) throw std::runtime_error("the checkpoint's chains are not this render's");
-      ChainRecord& rec = records[c];
-      rec.found = true;
-      rec.phase = uint8_t(in.u64());
-      rec.owesRefresh = in.u64() != 0;
-      rec.state = in.block();
-      if (rec.state.size() < 3) throw std::runtime_error("truncated chain state");
+      if (c >= records.size() || !records[c].empty()) throw std::runtime_error("the checkpoint's chains are not this render's");
+      records[c] = in.block();
+      if (records[c].empty()) throw std::runtime_error("truncated replica-chain state");
     }
     if (!in.done()) throw std::runtime_error("the checkpoint's replica state has trailing data");
   }
-  for (const ChainRecord& rec : records)
-    if (!rec.found) throw std::runtime_error("the checkpoint misses chains");
+  for (const std::vector<uint64_t>& rec : records)
+    if (rec.empty()) throw std::runtime_error("the checkpoint misses chains");
 
+  // Every chain's level, owed re-evaluation and phase as when it arrives by migration (the
+  // phases of chains hosted elsewhere are never read with local decisions); only the hosted ones
+  // are traced again.
   messageEpoch_.assign(size_t(groups()), epoch_);
-  for (int c = 0; c < chainCount(); ++c) {
-    const ChainRecord& rec = records[size_t(c)];
-    levelOf_[size_t(c)] = int(rec.state[2]);  // ReplicaChain::serialize: rng state, increment, level, ...
-    epochOf_[size_t(c)] = rec.owesRefresh ? epoch_ - 1 : epoch_;
-    if (!localDecisions() || hosts(c)) trips_.setPhase(c, rec.phase);
-  }
+  for (int c = 0; c < chainCount(); ++c) records[size_t(c)] = noteArrival(c, records[size_t(c)]);
   chains_.clear();
-  for (int c : hosted()) chains_.emplace_back(records[size_t(c)].state, family_, evaluator_);
+  for (int c : hosted()) chains_.emplace_back(records[size_t(c)], family_, evaluator_);
   reindex();
   if (!localDecisions() || rank_ == 0) {
     tally_ = tally;

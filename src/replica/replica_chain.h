@@ -55,6 +55,8 @@ class ReplicaChain {
   // current path is traced again from the state). Counters start at zero.
   ReplicaChain(const std::vector<uint64_t>& serialized, const LevelFamily& family, const LevelEvaluator& eval);
   std::vector<uint64_t> serialize() const;
+  // The level a serialized chain holds.
+  static int serializedLevel(const std::vector<uint64_t>& serialized) { return int(serialized.at(2)); }
 
   // Picks a bootstrap sample in proportion to its level's target (start-up bias elimination).
   size_t pickBootstrap(const Distribution1D& bootstrap) { return bootstrap.sample(rng_.uniform()); }

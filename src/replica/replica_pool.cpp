@@ -261,25 +261,31 @@ std::vector<ChainMove> ReplicaPool::balanceMoves(int group, const std::vector<do
   return moves;
 }
 
-std::vector<uint64_t> ReplicaPool::exportChain(int chain) {
-  if (localIndex_[size_t(chain)] < 0) throw std::logic_error("exporting a chain this rank does not host");
-  const size_t i = size_t(localIndex_[size_t(chain)]);
-  for (int k = 0; k < levels(); ++k) departed_[size_t(k)].add(chains_[i].counters()[size_t(k)]);
-  std::vector<uint64_t> state = chains_[i].serialize();
-  // A chain of a group that has not run since the regularisation moved still owes its evaluation
-  // under the new targets (which draws from its stream): it owes it on arrival too.
+std::vector<uint64_t> ReplicaPool::travellingChain(int chain) const {
+  std::vector<uint64_t> state = chains_[size_t(localIndex_[size_t(chain)])].serialize();
   state.push_back(epochOf_[size_t(chain)] == epoch_ ? 0 : 1);
   state.push_back(trips_.phase(chain));  // only the host tracks it with local decisions
   return state;
 }
 
+std::vector<uint64_t> ReplicaPool::noteArrival(int chain, const std::vector<uint64_t>& travelling) {
+  if (travelling.size() < 5) throw std::runtime_error("truncated replica-chain state");
+  std::vector<uint64_t> state(travelling.begin(), travelling.end() - 2);
+  levelOf_[size_t(chain)] = ReplicaChain::serializedLevel(state);
+  epochOf_[size_t(chain)] = travelling[travelling.size() - 2] != 0 ? epoch_ - 1 : epoch_;  // owed: a stale epoch
+  trips_.setPhase(chain, uint8_t(travelling.back()));
+  return state;
+}
+
+std::vector<uint64_t> ReplicaPool::exportChain(int chain) {
+  if (localIndex_[size_t(chain)] < 0) throw std::logic_error("exporting a chain this rank does not host");
+  for (int k = 0; k < levels(); ++k)
+    departed_[size_t(k)].add(chains_[size_t(localIndex_[size_t(chain)])].counters()[size_t(k)]);
+  return travellingChain(chain);
+}
+
 void ReplicaPool::importChain(int chain, const std::vector<uint64_t>& state) {
-  if (state.size() < 2) throw std::runtime_error("truncated replica-chain state");
-  imported_.emplace_back(chain, ReplicaChain(std::vector<uint64_t>(state.begin(), state.end() - 2), family_, evaluator_));
-  trips_.setPhase(chain, uint8_t(state.back()));
-  levelOf_[size_t(chain)] = imported_.back().second.level();
-  const bool owesRefresh = state[state.size() - 2] != 0;
-  epochOf_[size_t(chain)] = owesRefresh ? epoch_ - 1 : epoch_;  // a refresh owed is a stale epoch
+  imported_.emplace_back(chain, ReplicaChain(noteArrival(chain, state), family_, evaluator_));
 }
 
 void ReplicaPool::commitMoves() {

@@ -104,6 +104,12 @@ class ReplicaPool {
   const std::vector<int>& hosted() const { return hostedByRank_[size_t(rank_)]; }
   void reindex();  // localIndex_ from hosted()
   std::vector<ChainMove> balanceMoves(int group, const std::vector<double>& seconds) const;
+  // A hosted chain as it travels to another rank or into a checkpoint: ReplicaChain::serialize(),
+  // then whether it owes a re-evaluation under targets that moved since its group last ran (which
+  // draws from its stream), then its round-trip phase.
+  std::vector<uint64_t> travellingChain(int chain) const;
+  // Notes such a record's level, owed re-evaluation and phase; returns its serialized chain.
+  std::vector<uint64_t> noteArrival(int chain, const std::vector<uint64_t>& travelling);
 
   ReplicaSettings settings_;
   uint64_t seed_;
