@@ -18,16 +18,10 @@ bool isRoot() {
 
 CheckpointTally g_tally;
 
-// The root's failure (empty: none) becomes the same InputError on every rank.
-void shareFailure(std::string problem, const std::string& file) {
-  broadcastFromRoot(problem);
-  if (!problem.empty()) throw InputError(file, "", problem);
-}
-
 }  // namespace
 
 void saveCheckpoint(const CheckpointPlan& plan, const char* integrator, const nlohmann::json& progress,
-                    const std::vector<Film>& films, const std::vector<uint64_t>& part) {
+                    std::span<const Film> films, const std::vector<uint64_t>& part) {
   const double start = MPI_Wtime();
   std::vector<std::vector<double>> sums;
   for (const Film& f : films) {
@@ -38,14 +32,8 @@ void saveCheckpoint(const CheckpointPlan& plan, const char* integrator, const nl
   std::string problem;
   if (isRoot()) {
     Checkpoint c;
-    c.header = {{"format", 1},
-                {"integrator", integrator},
-                {"ranks", parts.size()},
-                {"progress", progress},
-                {"films", sums.size()},
-                {"film_length", sums.empty() ? 0 : sums[0].size()},
-                {"identity", plan.identity},
-                {"settings", plan.settings}};
+    c.header = {{"format", 1},          {"integrator", integrator}, {"ranks", parts.size()},
+                {"progress", progress}, {"identity", plan.identity}, {"settings", plan.settings}};
     WordWriter w;
     w.u64(sums.size());
     w.u64(sums.empty() ? 0 : sums[0].size());
@@ -56,10 +44,10 @@ void saveCheckpoint(const CheckpointPlan& plan, const char* integrator, const nl
     try {
       writeCheckpoint(plan.dir, c);
     } catch (const InputError& e) {
-      problem = e.reason() + "; the render stops here (an earlier checkpoint in " + plan.dir + " is intact)";
+      problem = std::string(e.what()) + "; the render stops here (an earlier checkpoint in " + plan.dir + " is intact)";
     }
   }
-  shareFailure(problem, checkpointFile(plan.dir));
+  shareRootProblem(problem);
   ++g_tally.written;
   g_tally.seconds += MPI_Wtime() - start;
 }
@@ -92,8 +80,7 @@ Resumed loadCheckpoint(const CheckpointPlan& plan, const char* integrator) {
       problem = out.file + ": the checkpoint does not read as one (" + e.what() + ")";
     }
   }
-  broadcastFromRoot(problem);
-  if (!problem.empty()) throw InputError("", "", problem);
+  shareRootProblem(problem);
   broadcastFromRoot(parts);
   broadcastFromRoot(header);
   const nlohmann::json h = nlohmann::json::parse(header);
@@ -105,7 +92,7 @@ Resumed loadCheckpoint(const CheckpointPlan& plan, const char* integrator) {
   return out;
 }
 
-void Resumed::restoreFilms(std::vector<Film>& into) const {
+void Resumed::restoreFilms(std::span<Film> into) const {
   if (filmCount != into.size() || (filmCount > 0 && filmLength != into[0].data().size()))
     throw InputError(file, "", "the checkpoint's films do not match this render's");
   for (size_t k = 0; k < films.size(); ++k) into[k].data() = films[k];

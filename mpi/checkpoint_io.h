@@ -3,6 +3,7 @@
 // the root, every rank's state gathered there and written by the root; read back by the root,
 // checked against this render, and shared with every rank. Collective; a failure throws the same
 // InputError on every rank.
+#include <span>
 #include <string>
 #include <vector>
 
@@ -28,12 +29,12 @@ struct Resumed {
   std::vector<std::vector<uint64_t>> parts;  // every rank: every rank's part, in the rank order of then
   // Puts the reduced films into the root's `films` (the other ranks' stay empty to add to them);
   // throws InputError on every rank if their number or size differs.
-  void restoreFilms(std::vector<Film>& films) const;
+  void restoreFilms(std::span<Film> films) const;
 };
 
 // `progress` is the integrator's (rounds or passes, elapsed time, ...); `part` this rank's state.
 void saveCheckpoint(const CheckpointPlan& plan, const char* integrator, const nlohmann::json& progress,
-                    const std::vector<Film>& films, const std::vector<uint64_t>& part);
+                    std::span<const Film> films, const std::vector<uint64_t>& part);
 // Checkpoints this process wrote (or took part in) and the seconds they took, for stats.json.
 struct CheckpointTally {
   int written = 0;

@@ -1,5 +1,6 @@
 #include "comm.h"
 
+#include "core/error.h"
 #include "interrupt.h"
 
 #include <algorithm>
@@ -276,5 +277,10 @@ void broadcastFromRoot(std::string& text) {
   std::memcpy(words.data() + 1, text.data(), text.size());
   broadcastFromRoot(words);
   text.assign(reinterpret_cast<const char*>(words.data() + 1), size_t(words[0]));
+}
+
+void shareRootProblem(std::string problem) {
+  broadcastFromRoot(problem);
+  if (!problem.empty()) throw InputError("", "", problem);
 }
 }  // namespace relt::mpi

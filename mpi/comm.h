@@ -92,4 +92,6 @@ std::vector<std::vector<uint64_t>> gatherToRoot(const std::vector<uint64_t>& min
 // The root's words (or text) on every rank.
 void broadcastFromRoot(std::vector<uint64_t>& words);
 void broadcastFromRoot(std::string& text);
+// A problem the root found (empty: none) becomes the same InputError on every rank.
+void shareRootProblem(std::string problem);
 }  // namespace relt::mpi

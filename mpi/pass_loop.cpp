@@ -40,7 +40,7 @@ int runPasses(const Session& session, const RenderSettings& settings,
     lastPass = elapsed - lastElapsed;
     lastElapsed = elapsed;
     const bool more = !agreed.stop && another();
-    if (snapshots && more && snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more)) {
+    if (snapshots && snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more)) {
       lastSnapshot = elapsed;
       snapshot(passes);
     }

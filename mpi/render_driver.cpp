@@ -46,8 +46,7 @@ void checkOutputsWritable(const Session& session, const RenderSettings& s) {
       }
     }
   }
-  const int bad = allreduceMax(problem.empty() ? 0 : 1);
-  if (bad) throw InputError("", "", session.isRoot() ? problem : "output not writable");
+  shareRootProblem(problem);
 }
 
 // The checkpoint folder is made if missing and must be writable; the one to resume from must
@@ -66,8 +65,7 @@ void checkCheckpointFolders(const Session& session, const CheckpointPlan& plan) 
     if (problem.empty() && !plan.resume.empty() && !std::filesystem::exists(checkpointFile(plan.resume)))
       problem = plan.resume + ": no checkpoint to resume (" + checkpointFile(plan.resume) + " does not exist)";
   }
-  const int bad = allreduceMax(problem.empty() ? 0 : 1);
-  if (bad) throw InputError("", "", session.isRoot() ? problem : "checkpoint folder");
+  shareRootProblem(problem);
 }
 
 // EXR (with optional extra layers) and optional PNG, each written atomically. Root only.
@@ -313,10 +311,8 @@ void runRender(const Session& session, RenderSettings settings, CheckpointPlan p
   // pt and bdpt: a checkpoint is the film and the passes done (pass k's samples depend on k only).
   PassStart start;
   uint64_t earlierSamples = 0;
-  std::vector<Film> films = {film};
   if (resumed) {
-    resumed->restoreFilms(films);
-    film = films[0];
+    resumed->restoreFilms({&film, 1});
     start.passes = resumed->progress.at("passes").get<int>();
     start.elapsed = resumed->progress.at("elapsed").get<double>();
     earlierSamples = resumed->progress.at("samples").get<uint64_t>();
@@ -336,10 +332,9 @@ void runRender(const Session& session, RenderSettings settings, CheckpointPlan p
       [&, lastCheckpoint = start.elapsed](int done, double elapsed, bool more) mutable {
         if (plan.dir.empty() || !checkpointDue(plan.every, elapsed, lastCheckpoint, more)) return;
         lastCheckpoint = elapsed;
-        films[0] = film;
         const nlohmann::json progress = {
             {"passes", done}, {"elapsed", elapsed}, {"samples", earlierSamples + allreduceSum(renderer.samples())}};
-        saveCheckpoint(plan, integratorName(settings.integrator), progress, films, {});
+        saveCheckpoint(plan, integratorName(settings.integrator), progress, {&film, 1}, {});
       });
   const uint64_t samplesNow = allreduceSum(renderer.samples()), samples = earlierSamples + samplesNow;
   const Gathered g = gatherAfterRender(renderStart, renderer, film);
