@@ -17,8 +17,8 @@ struct CheckpointPlan {
   std::string dir;          // --checkpoint: where to write ("" = never)
   double every = 0.0;       // --checkpoint-every seconds (0: only when the render ends)
   std::string resume;       // --resume: the checkpoint to continue ("" = start afresh)
-  nlohmann::json identity;  // imageIdentity() of this render
-  nlohmann::json settings;  // this render's settings, for the reader of the file
+  nlohmann::json identity;  // imageIdentity() of this render (the root's; only it reads and writes)
+  nlohmann::json settings;  // this render's settings, for the reader of the file (the root's)
 };
 
 struct Resumed {

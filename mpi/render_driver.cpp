@@ -239,8 +239,11 @@ void runRender(const Session& session, RenderSettings settings, CheckpointPlan p
     for (const std::string& w : renderer.scene().warnings) std::fprintf(stderr, "relt: warning: %s\n", w.c_str());
   checkOutputsWritable(session, settings);
   checkCheckpointFolders(session, plan);
-  plan.identity = imageIdentity(settings, sceneDigest(settings.scenePath, summarizeScene(renderer.scene())));
-  plan.settings = settings.toJson();
+  // Only the root reads and writes checkpoints; the digest reads the scene file again.
+  if (session.isRoot() && (!plan.dir.empty() || !plan.resume.empty())) {
+    plan.identity = imageIdentity(settings, sceneDigest(settings.scenePath, summarizeScene(renderer.scene())));
+    plan.settings = settings.toJson();
+  }
   std::optional<Resumed> resumed;
   if (!plan.resume.empty()) resumed = loadCheckpoint(plan, integratorName(settings.integrator));
 
