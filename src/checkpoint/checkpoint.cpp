@@ -1,16 +1,11 @@
 #include "checkpoint/checkpoint.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 
 #include "core/error.h"
+#include "core/file.h"
 #include "image/image.h"
 
 namespace relt {
@@ -27,7 +22,7 @@ std::string hex(uint64_t v) {
 
 void appendWord(std::string& out, uint64_t v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); }
 
-uint64_t wordAt(const std::string& in, size_t at) {
+uint64_t wordAt(const std::vector<uint8_t>& in, size_t at) {
   uint64_t v;
   std::memcpy(&v, in.data() + at, sizeof v);
   return v;
@@ -44,8 +39,8 @@ uint64_t fnv1a(const void* data, size_t bytes, uint64_t hash) {
 }
 
 std::string sceneDigest(const std::string& path, const std::string& summary) {
-  std::ifstream in(path, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string reason;
+  const std::vector<uint8_t> bytes = readWholeFile(path, &reason).value_or(std::vector<uint8_t>());
   return hex(fnv1a(summary.data(), summary.size(), fnv1a(bytes.data(), bytes.size())));
 }
 
@@ -60,21 +55,17 @@ void writeCheckpoint(const std::string& dir, const Checkpoint& checkpoint) {
   appendWord(out, fnv1a(out.data(), out.size()));
   const std::string file = checkpointFile(dir);
   writeFileAtomically(file, out);
-  // The rename is durable once the directory is synced too.
-  const int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY);
-  if (fd >= 0) {
-    ::fsync(fd);
-    ::close(fd);
-  }
 }
 
 Checkpoint readCheckpoint(const std::string& dir) {
   const std::string file = checkpointFile(dir);
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file, "", std::string("cannot read the checkpoint: ") + std::strerror(errno));
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string reason;
+  const std::optional<std::vector<uint8_t>> read = readWholeFile(file, &reason);
+  if (!read) throw InputError(file, "", "cannot read the checkpoint: " + reason);
+  const std::vector<uint8_t>& bytes = *read;
   const size_t magic = sizeof kMagic - 1;
-  if (bytes.compare(0, magic, kMagic) != 0) throw InputError(file, "", "not a relt checkpoint");
+  if (bytes.size() < magic || std::memcmp(bytes.data(), kMagic, magic) != 0)
+    throw InputError(file, "", "not a relt checkpoint");
   auto corrupt = [&](const char* what) { return InputError(file, "", std::string("checkpoint is damaged: ") + what); };
   if (bytes.size() < magic + 3 * sizeof(uint64_t)) throw corrupt("truncated");
   const size_t body = bytes.size() - sizeof(uint64_t);
@@ -83,7 +74,8 @@ Checkpoint readCheckpoint(const std::string& dir) {
   if (headerLength > body - magic - 2 * sizeof(uint64_t)) throw corrupt("header length");
   Checkpoint c;
   try {
-    c.header = nlohmann::json::parse(bytes.substr(magic + sizeof(uint64_t), headerLength));
+    const auto* text = bytes.data() + magic + sizeof(uint64_t);
+    c.header = nlohmann::json::parse(text, text + headerLength);
   } catch (const nlohmann::json::exception&) {
     throw corrupt("header is not JSON");
   }

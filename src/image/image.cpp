@@ -52,6 +52,13 @@ void commitTemporary(const std::string& tmp, const std::string& path) {
     std::remove(tmp.c_str());
     throw InputError(path, "", "cannot write: " + reason);
   }
+  // The rename itself is durable once the folder is synced too.
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  const int dir = ::open(parent.empty() ? "." : parent.c_str(), O_RDONLY | O_DIRECTORY);
+  if (dir >= 0) {
+    ::fsync(dir);
+    ::close(dir);
+  }
 }
 
 void writeFileAtomically(const std::string& path, const std::string& content) {

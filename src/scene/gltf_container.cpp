@@ -6,6 +6,8 @@
 #include <cstring>
 #include <fstream>
 
+#include "core/file.h"
+
 namespace relt::gltf {
 
 static_assert(std::endian::native == std::endian::little, "glTF binary data is little-endian");
@@ -20,37 +22,6 @@ uint32_t readU32(const std::vector<uint8_t>& bytes, size_t offset) {
   uint32_t v;
   std::memcpy(&v, bytes.data() + offset, 4);
   return v;
-}
-
-// Reads a whole file; on failure returns nullopt and a reason.
-std::optional<std::vector<uint8_t>> readFile(const std::filesystem::path& path, std::string* reason) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) {
-    *reason = "no such file";
-    return std::nullopt;
-  }
-  if (!std::filesystem::is_regular_file(path, ec)) {
-    *reason = "not a regular file";
-    return std::nullopt;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    *reason = std::strerror(errno);
-    return std::nullopt;
-  }
-  in.seekg(0, std::ios::end);
-  const std::streamoff size = in.tellg();
-  in.seekg(0, std::ios::beg);
-  if (size < 0) {
-    *reason = "cannot determine its size";
-    return std::nullopt;
-  }
-  std::vector<uint8_t> bytes(static_cast<size_t>(size));
-  if (size > 0 && !in.read(reinterpret_cast<char*>(bytes.data()), size)) {
-    *reason = "read error";
-    return std::nullopt;
-  }
-  return bytes;
 }
 
 std::string lowerExtension(const std::string& path) {
@@ -133,7 +104,7 @@ std::string percentDecode(const std::string& s) {
 
 GltfSource readGltfSource(const Context& ctx, const std::string& path) {
   std::string reason;
-  std::optional<std::vector<uint8_t>> bytes = readFile(path, &reason);
+  std::optional<std::vector<uint8_t>> bytes = readWholeFile(path, &reason);
   if (!bytes) ctx.fail("", "cannot read the file: " + reason);
   if (bytes->empty()) ctx.fail("", "the file is empty");
 
@@ -229,7 +200,7 @@ std::vector<uint8_t> loadBufferBytes(const Context& ctx, GltfSource& src, size_t
                "uri " + brief(Json(*uri)) + " is remote; only relative file paths and data URIs are supported");
     const std::filesystem::path file = src.dir / percentDecode(*uri);
     std::string reason;
-    std::optional<std::vector<uint8_t>> bytes = readFile(file, &reason);
+    std::optional<std::vector<uint8_t>> bytes = readWholeFile(file, &reason);
     if (!bytes) ctx.fail(element, "cannot read " + brief(Json(*uri)) + ": " + reason);
     data = std::move(*bytes);
     origin = "file " + brief(Json(*uri));
