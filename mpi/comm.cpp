@@ -4,6 +4,7 @@
 #include "interrupt.h"
 
 #include <algorithm>
+#include <bit>
 #include <atomic>
 #include <chrono>
 #include <condition_variable>
@@ -257,6 +258,17 @@ std::vector<std::vector<uint64_t>> gatherToRoot(const std::vector<uint64_t>& min
       for (int r = 0; r < size; ++r)
         out.emplace_back(all.begin() + offsets[size_t(r)], all.begin() + offsets[size_t(r)] + counts[size_t(r)]);
   });
+  return out;
+}
+
+std::vector<std::vector<double>> gatherToRoot(const std::vector<double>& mine) {
+  std::vector<uint64_t> words(mine.size());
+  std::transform(mine.begin(), mine.end(), words.begin(), [](double v) { return std::bit_cast<uint64_t>(v); });
+  std::vector<std::vector<double>> out;
+  for (const std::vector<uint64_t>& rank : gatherToRoot(words)) {
+    out.emplace_back(rank.size());
+    std::transform(rank.begin(), rank.end(), out.back().begin(), [](uint64_t w) { return std::bit_cast<double>(w); });
+  }
   return out;
 }
 

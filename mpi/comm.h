@@ -89,6 +89,7 @@ class PendingAllgatherv {
 namespace relt::mpi {
 // Every rank's words on the root, in rank order (empty elsewhere).
 std::vector<std::vector<uint64_t>> gatherToRoot(const std::vector<uint64_t>& mine);
+std::vector<std::vector<double>> gatherToRoot(const std::vector<double>& mine);
 // The root's words (or text) on every rank.
 void broadcastFromRoot(std::vector<uint64_t>& words);
 void broadcastFromRoot(std::string& text);

@@ -122,6 +122,8 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   RoundLoopHooks hooks;
   hooks.elapsed = [&] { return resumed.elapsed + since(start); };
   hooks.stop = [] { return stopSignalled(); };
+  // The scaling model replays the stepping times (stats.json); at most about 2^20 numbers in all.
+  if (!settings.stats.empty()) hooks.traceLimit = std::max<size_t>(1024, (size_t(1) << 20) / size_t(session.size()));
   hooks.roundDone = [&](uint64_t rounds, double elapsed, bool more) {
     if (session.isRoot() && elapsed - lastPrint >= 1.0) {
       lastPrint = elapsed;
@@ -148,6 +150,7 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   const uint64_t rounds = loop.rounds;
   const std::vector<double> stepMean = allgather(loop.stepMean), stepDeviation = allgather(loop.stepDeviation);
   const std::vector<double> finishMean = allgather(loop.finishMean);
+  const std::vector<std::vector<double>> stepTrace = gatherToRoot(loop.stepTrace);
   const double elapsed = loop.elapsed;
   if (session.isRoot() && tty && lastPrint > 0.0) std::fprintf(stderr, "\n");
   const double roundCollective = collectiveSeconds() - collectiveBefore;
@@ -166,6 +169,7 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   out.stepMean = stepMean;
   out.stepDeviation = stepDeviation;
   out.finishMean = finishMean;
+  out.stepTrace = stepTrace;
   for (int r = 0; r < session.size(); ++r) out.chainsPerRank.push_back(pool.hostedCount(r));
   out.bootstrapSamples = uint64_t(rs.bootstrap);
   out.resolveDivisor = replicaResolveDivisor(out.stepsPerChain, rs.ladders, area);

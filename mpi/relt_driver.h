@@ -28,6 +28,7 @@ struct ReltOutcome {
   std::vector<double> stepMean, stepDeviation;  // per rank: seconds stepping a group for a round
   std::vector<double> nonFinitePerRank;         // per rank: proposals with NaN/Inf splats (dropped)
   std::vector<double> finishMean;               // per rank: seconds in a group round's finishRound
+  std::vector<std::vector<double>> stepTrace;   // per rank (root only): seconds stepping each group round
   uint64_t bootstrapSamples = 0;
   double resolveDivisor = 0.0;              // film sums -> pixels
   double loopSeconds = 0.0;                 // the round loop (agreed elapsed time)

@@ -158,6 +158,7 @@ nlohmann::json reltStats(const mpi::ReltOutcome& o) {
   j["group_round_step_seconds_mean_per_rank"] = o.stepMean;
   j["group_round_step_seconds_deviation_per_rank"] = o.stepDeviation;
   j["group_round_finish_seconds_mean_per_rank"] = o.finishMean;
+  j["group_round_step_seconds_trace_per_rank"] = o.stepTrace;
   nlohmann::json levels = nlohmann::json::array();
   for (int k = 0; k < o.levels; ++k) {
     const LevelCounters& c = o.perLevel[size_t(k)];

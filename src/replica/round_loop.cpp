@@ -17,6 +17,7 @@ struct Stepper {
   const RoundLoopHooks& hooks;
   double steppings = 0.0, sum = 0.0, sumSquares = 0.0;  // per-group-round stepping times
   double finishes = 0.0, finishSum = 0.0;                // time in finishRound
+  std::vector<double> trace = {};                        // the first hooks.traceLimit stepping times
   std::vector<std::vector<size_t>> lengths = {};         // per group, every rank's message length
   bool stopRequested = false;
 
@@ -35,6 +36,7 @@ struct Stepper {
     steppings += 1.0;
     sum += seconds;
     sumSquares += seconds * seconds;
+    if (trace.size() < hooks.traceLimit) trace.push_back(seconds);
     const bool stop = hooks.stop && hooks.stop();
     transport.post(group, pool.roundMessage(group, hooks.elapsed(), seconds, stop), lengths[size_t(group)]);
   }
@@ -97,6 +99,7 @@ RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule,
           out.stepMean = s.sum / s.steppings;
           out.finishMean = s.finishSum / s.finishes;
           out.stepDeviation = std::sqrt(std::max(0.0, s.sumSquares / s.steppings - out.stepMean * out.stepMean));
+          out.stepTrace = std::move(s.trace);
           return out;
         }
       }

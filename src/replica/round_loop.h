@@ -39,6 +39,8 @@ struct RoundLoopHooks {
   // whether another round follows (snapshots, progress, checkpoints: group 0 has finished round
   // `rounds` - 1 and the other groups' collectives of that round are pending).
   std::function<void(uint64_t rounds, double elapsed, bool more)> roundDone;
+  // Record the stepping time of the first this many group rounds (the scaling model replays them).
+  size_t traceLimit = 0;
 };
 
 // Where the loop starts: at the beginning, or where a checkpoint was taken (after `rounds` rounds,
@@ -59,6 +61,8 @@ struct RoundLoopResult {
   // Mean time this rank spent in finishRound per group round (exchanges of every ladder of the
   // group, normalisers, placement): replicated work, it grows with the total ladder count.
   double finishMean = 0.0;
+  // This rank's stepping time of each group round in loop order, the first hooks.traceLimit.
+  std::vector<double> stepTrace;
 };
 
 RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule, RoundTransport& transport,

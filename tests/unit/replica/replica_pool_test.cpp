@@ -200,6 +200,30 @@ TEST(RoundLoop, AStopRequestEndsTheLoopAfterTheCurrentRound) {
   }
 }
 
+// The scaling model replays each group round's stepping time: the loop records the first
+// traceLimit of them, in loop order, and nothing without a limit.
+TEST(RoundLoop, RecordsTheSteppingTimeOfTheFirstGroupRounds) {
+  Fixture fx;
+  const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+  const ReplicaSchedule schedule(16.0 * 12.0, 15, 4, std::nullopt, 64.0);  // 205 rounds of 2 groups
+  for (size_t limit : {size_t(0), size_t(7), size_t(10000)}) {
+    ReplicaPool pool(*fx.eval, fx.settings, 5, lum, 0, 1);
+    std::vector<Film> films(1, Film(16, 12));
+    LocalTransport transport;
+    RoundLoopHooks hooks;
+    hooks.elapsed = [] { return 0.0; };
+    hooks.traceLimit = limit;
+    const RoundLoopResult r = runRoundLoop(pool, schedule, transport, films, hooks);
+    ASSERT_EQ(r.stepTrace.size(), std::min<size_t>(limit, 2 * r.rounds)) << limit;
+    double sum = 0.0;
+    for (double t : r.stepTrace) {
+      EXPECT_GT(t, 0.0);
+      sum += t;
+    }
+    if (limit == 10000) EXPECT_NEAR(sum / double(r.stepTrace.size()), r.stepMean, 1e-12);
+  }
+}
+
 // The round loop's order (group 0 steps a round before the other groups finish theirs) with a
 // regularisation that moves the tempered targets: a chain can move while its state still waits to
 // be evaluated under the new targets, and must then be evaluated on arrival exactly as it would
