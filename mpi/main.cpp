@@ -49,6 +49,11 @@ void addReplicaOptions(CLI::App& cmd, Options& o) {
   only(cmd.add_option("--exchange-interval", r.exchangeInterval, "relt: steps per chain between exchanges")
            ->check(CLI::Range(1, 1 << 20))
            ->capture_default_str());
+  only(cmd.add_option("--normaliser-lag", r.normaliserLag,
+                      "relt: rounds between taking large-step sums and using them in the normalisers (with packed "
+                      "placement a rank may run this many rounds ahead of the slowest)")
+           ->check(CLI::Range(1, 1024))
+           ->capture_default_str());
   only(cmd.add_option("--placement", o.placement,
                       "relt: chains over ranks (spread: chain c on rank c mod P; packed: whole ladders, exchanges decided "
                       "locally; auto: packed above 8 ranks when ladders >= 2 x ranks)")

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <deque>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -54,11 +55,11 @@ class MpiTransport final : public RoundTransport {
   explicit MpiTransport(int rank) : rank_(rank) {}
   void post(int group, std::vector<double> mine, const std::vector<size_t>& lengths) override {
     if (pending_.size() <= size_t(group)) pending_.resize(size_t(group) + 1);
-    pending_[size_t(group)] = std::make_unique<PendingAllgatherv>(std::move(mine), lengths);
+    pending_[size_t(group)].push_back(std::make_unique<PendingAllgatherv>(std::move(mine), lengths));
   }
   std::vector<std::vector<double>> wait(int group) override {
-    std::vector<std::vector<double>> out = pending_[size_t(group)]->wait();
-    pending_[size_t(group)].reset();
+    std::vector<std::vector<double>> out = pending_[size_t(group)].front()->wait();
+    pending_[size_t(group)].pop_front();
     return out;
   }
   void migrate(ReplicaPool& pool) override {
@@ -77,13 +78,14 @@ class MpiTransport final : public RoundTransport {
   }
 
   void progress() override {
-    for (const std::unique_ptr<PendingAllgatherv>& p : pending_)
-      if (p) p->test();
+    // One test per group: each MPI call runs the progress engine for every pending request.
+    for (const auto& group : pending_)
+      if (!group.empty()) group.front()->test();
   }
 
  private:
   int rank_;
-  std::vector<std::unique_ptr<PendingAllgatherv>> pending_;
+  std::vector<std::deque<std::unique_ptr<PendingAllgatherv>>> pending_;  // per group, oldest first
 };
 
 }  // namespace
@@ -151,9 +153,10 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   const std::vector<double> stepMean = allgather(loop.stepMean), stepDeviation = allgather(loop.stepDeviation);
   const std::vector<double> finishMean = allgather(loop.finishMean);
   const std::vector<std::vector<double>> stepTrace = gatherToRoot(loop.stepTrace);
-  const double elapsed = loop.elapsed;
-  if (session.isRoot() && tty && lastPrint > 0.0) std::fprintf(stderr, "\n");
   const double roundCollective = collectiveSeconds() - collectiveBefore;
+  // The loop's agreed time is that of the messages read back (normaliser lag): the real end here.
+  const double elapsed = allreduceMax(resumed.elapsed + since(start));
+  if (session.isRoot() && tty && lastPrint > 0.0) std::fprintf(stderr, "\n");
 
   ReltOutcome out;
   out.rounds = rounds;

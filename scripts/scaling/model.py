@@ -1,7 +1,7 @@
 """Cost model of relt's round loop (docs/SCALING.md): predicted parallel efficiency against ranks.
 
 python3 model.py STATS.json COLLECTIVES.jsonl OUT.md OUT.png [--alpha SECONDS] [--bandwidth BYTES_PER_S]
-                [--chains-per-rank N ...] [--seed S]
+                [--chains-per-rank N ...] [--seed S] [--summary FILE --label TEXT]
 
 STATS.json: a 2-rank relt render with spread placement and --stats (per-rank stepping time of
 every group round, time deciding the exchanges, time in collectives); COLLECTIVES.jsonl:
@@ -24,10 +24,12 @@ round, per protocol:
                     decisions and copying the gathered targets do not
   sub-communicators spread, but each ladder exchanges on its own communicator of M ranks: a rank
                     takes part in one small collective per hosted chain per round
-  staggered-packed  (relt above 8 ranks) whole ladders per rank, decisions local, messages of
-                    M + 4 numbers per rank
-  lagged-packed D   (not built) packed, with normalisers applied D rounds late: a group waits for
-                    its collective of D rounds ago, so a rank may run D rounds ahead
+  staggered-packed  whole ladders per rank, decisions local, messages of M + 4 numbers per rank,
+                    every round waits for the slowest rank (relt above 8 ranks with
+                    --normaliser-lag 1)
+  lagged-packed D   the same with the sums read back D rounds late (--normaliser-lag D; relt's
+                    default above 8 ranks is D = 32): a group waits for its collective of D rounds
+                    ago, so a rank may run D rounds ahead
 """
 import argparse
 import json
@@ -53,6 +55,8 @@ ap.add_argument("--alpha", type=float, default=2e-6)
 ap.add_argument("--bandwidth", type=float, default=12e9)
 ap.add_argument("--chains-per-rank", type=int, nargs="*")
 ap.add_argument("--seed", type=int, default=1)
+ap.add_argument("--summary", help="append this run's row (1,024 ranks, measured chains per rank) to FILE")
+ap.add_argument("--label", default="")
 a = ap.parse_args()
 
 j = json.load(open(a.stats))
@@ -80,7 +84,7 @@ rng0 = np.random.default_rng(a.seed)
 shuffled = [rng0.permutation(t) for t in clipped]
 noises = {"as measured": traces, "no stalls": clipped, "no stalls, no drift": shuffled}
 protocols = ["blocking-spread", "staggered-spread", "sub-communicators", "staggered-packed",
-             "lagged-packed D=8", "lagged-packed D=32"]
+             "lagged-packed D=8", "lagged-packed D=32"]  # relt: spread up to 8 ranks, then D=32
 ps = [2 ** k for k in range(1, 13, 1)]
 
 
@@ -160,4 +164,13 @@ for row, n in enumerate(counts):
 fig.suptitle("relt round loop: cost model (waiting simulated from measured stepping times)")
 fig.tight_layout()
 fig.savefig(a.out_png, dpi=100)
+if a.summary:
+    at = ps.index(1024)
+    with open(a.summary, "a") as f:
+        for noise in noises:
+            res = results[(noise, counts[0])]
+            f.write("| %s | %.2f ms, %.0f %%, longest %.0f ms | %s | %.1f %% | %s | %s |\n" % (
+                a.label, t_g0 * 1e3, 100 * sigma0 / t_g0, max(t.max() for t in traces) * 1e3,
+                " / ".join("%.1f %%" % (100 * x) for x in measured_share), 100 * (1 - replay), noise,
+                " | ".join("%.1f %%" % (100 * res[x][at]) for x in protocols)))
 print(open(a.out_md).read())

@@ -64,6 +64,7 @@ nlohmann::json RenderSettings::toJson() const {
       j["ladders"] = r.ladders;
       j["exchange"] = exchangeMoveName(r.exchange.move);
       j["exchange_interval"] = r.exchangeInterval;
+      j["normaliser_lag"] = r.normaliserLag;
       j["placement"] = placementName(r.placement);
       j["balance_window"] = r.balanceWindow;
       j["mis_levels"] = r.beta == 1.0 ? "balance" : "power";

@@ -7,7 +7,7 @@
 namespace relt {
 namespace {
 
-constexpr uint64_t kPartVersion = 1;
+constexpr uint64_t kPartVersion = 2;
 
 void writeCounters(WordWriter& w, const LevelCounters& c) {
   for (uint64_t v : {c.smallProposed, c.smallAccepted, c.largeProposed, c.largeAccepted, c.invalidProposals, c.nonFinite})
@@ -45,7 +45,8 @@ ExchangeTally readTally(WordReader& in, int m) {
 std::vector<uint64_t> ReplicaPool::checkpointPart() const {
   const int m = levels();
   WordWriter w;
-  for (uint64_t v : {kPartVersion, uint64_t(m), uint64_t(groups()), uint64_t(chainCount()), uint64_t(localDecisions())})
+  for (uint64_t v : {kPartVersion, uint64_t(m), uint64_t(groups()), uint64_t(chainCount()),
+                     uint64_t(settings_.normaliserLag), uint64_t(localDecisions())})
     w.u64(v);
   w.u64(stepsPerChain_);
   w.u64(epoch_);
@@ -58,9 +59,16 @@ std::vector<uint64_t> ReplicaPool::checkpointPart() const {
   writeTally(w, tally_);
   w.u64(trips_.total());
   for (const LevelCounters& c : hostedCounters()) writeCounters(w, c);
-  for (const LargeStepSums& posted : postedLarge_) {
-    w.f64s(posted.sum);
-    w.u64(posted.count);
+  // This rank's share of every round not read back yet, per group, oldest first.
+  for (int g = 0; g < groups(); ++g) {
+    const std::deque<PostedRound>& rounds = posted_[size_t(g)];
+    w.u64(uint64_t(epochRead_[size_t(g)]));
+    w.u64(rounds.size());
+    for (const PostedRound& p : rounds) {
+      w.f64s(p.large.sum);
+      w.u64(p.large.count);
+      w.u64(p.epoch);
+    }
   }
   w.u64(chains_.size());
   for (int c : hosted()) {
@@ -76,11 +84,13 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
   ExchangeTally tally(m);
   uint64_t trips = 0;
   std::vector<LevelCounters> counters(static_cast<size_t>(m));
-  std::vector<std::vector<LargeStepSums>> posted(parts.size());
+  // posted[r][g]: old rank r's share of group g's rounds not read back, oldest first.
+  std::vector<std::vector<std::vector<PostedRound>>> posted(parts.size());
   std::vector<std::vector<uint64_t>> records(static_cast<size_t>(chainCount()));  // travellingChain() of each
   for (size_t r = 0; r < parts.size(); ++r) {
     WordReader in(parts[r]);
-    for (uint64_t v : {kPartVersion, uint64_t(m), uint64_t(groups()), uint64_t(chainCount())})
+    for (uint64_t v : {kPartVersion, uint64_t(m), uint64_t(groups()), uint64_t(chainCount()),
+                       uint64_t(settings_.normaliserLag)})
       if (in.u64() != v) throw std::runtime_error("the checkpoint's ladders are not this render's");
     const bool local = in.u64() != 0;
     const uint64_t steps = in.u64(), epoch = in.u64();
@@ -109,9 +119,17 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
     }
     for (int k = 0; k < m; ++k) counters[size_t(k)].add(readCounters(in));
     for (int g = 0; g < groups(); ++g) {
-      LargeStepSums& s = posted[r].emplace_back(m);
-      s.sum = in.f64s(size_t(m));
-      s.count = in.u64();
+      std::vector<PostedRound>& rounds = posted[r].emplace_back();
+      epochRead_[size_t(g)] = char(in.u64() != 0);  // the same on every rank
+      const uint64_t count = in.u64();
+      if (count > uint64_t(settings_.normaliserLag) || (r > 0 && count != posted[0][size_t(g)].size()))
+        throw std::runtime_error("the checkpoint's pending rounds do not match");
+      for (uint64_t i = 0; i < count; ++i) {
+        PostedRound& p = rounds.emplace_back(PostedRound{LargeStepSums(m), 0});
+        p.large.sum = in.f64s(size_t(m));
+        p.large.count = in.u64();
+        p.epoch = in.u64();
+      }
     }
     for (uint64_t n = in.u64(); n > 0; --n) {
       const uint64_t c = in.u64();
@@ -127,7 +145,6 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
   // Every chain's level, owed re-evaluation and phase as when it arrives by migration (the
   // phases of chains hosted elsewhere are never read with local decisions); only the hosted ones
   // are traced again.
-  messageEpoch_.assign(size_t(groups()), epoch_);
   for (int c = 0; c < chainCount(); ++c) records[size_t(c)] = noteArrival(c, records[size_t(c)]);
   chains_.clear();
   for (int c : hosted()) chains_.emplace_back(records[size_t(c)], family_, evaluator_);
@@ -137,20 +154,54 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
     trips_.addEarlier(trips);
   }
   if (rank_ == 0) departed_ = counters;  // the counters of everything before, counted once
-  // The pending messages' large-step sums: each rank its own with the same rank count, otherwise
-  // all on the root (the sum is the same up to rounding).
-  for (int g = 1; g < groups(); ++g) {
-    LargeStepSums& mine = pendingLarge_[size_t(g)];
-    mine = LargeStepSums(m);
-    if (parts.size() == size_t(ranks_)) {
-      mine = posted[size_t(rank_)][size_t(g)];
-    } else if (rank_ == 0) {
-      for (const std::vector<LargeStepSums>& p : posted) {
-        for (int k = 0; k < m; ++k) mine.sum[size_t(k)] += p[size_t(g)].sum[size_t(k)];
-        mine.count += p[size_t(g)].count;
-      }
+  // The rounds not read back: each rank's own shares with the same rank count, otherwise all on
+  // the root (the sums are the same up to rounding). At the checkpoint (roundDone) group 0 had just
+  // finished its round and every other group's last round was still being gathered; the rounds
+  // gathered before are held (spread) or still travelling (local decisions: posted again).
+  const bool same = parts.size() == size_t(ranks_);
+  auto share = [&](size_t oldRank, int g, size_t i, int newRank) {
+    LargeStepSums out(m);
+    if (same) return oldRank == size_t(newRank) ? posted[oldRank][size_t(g)][i].large : out;
+    return newRank == 0 ? posted[oldRank][size_t(g)][i].large : out;
+  };
+  for (int g = 0; g < groups(); ++g) {
+    const std::vector<PostedRound>& rounds = posted[0][size_t(g)];
+    ungathered_[size_t(g)] = g > 0 && !rounds.empty() ? 1 : 0;
+    posted_[size_t(g)].clear();
+    held_[size_t(g)].clear();
+    for (size_t i = 0; i < rounds.size(); ++i) {
+      // Every rank's share (rank order), as its message's tail would have carried it.
+      std::vector<LargeStepSums> shares(size_t(ranks_), LargeStepSums{m});
+      for (size_t r = 0; r < parts.size(); ++r)
+        for (int q = 0; q < ranks_; ++q) {
+          const LargeStepSums s = share(r, g, i, q);
+          for (int k = 0; k < m; ++k) shares[size_t(q)].sum[size_t(k)] += s.sum[size_t(k)];
+          shares[size_t(q)].count += s.count;
+        }
+      posted_[size_t(g)].push_back({shares[size_t(rank_)], rounds[i].epoch});
+      if (localDecisions() || i + ungathered_[size_t(g)] >= rounds.size()) continue;
+      std::vector<std::vector<double>> tails;
+      for (const LargeStepSums& s : shares) tails.push_back(tail(s, 0.0));
+      held_[size_t(g)].push_back(std::move(tails));
     }
   }
+}
+
+std::vector<std::vector<double>> ReplicaPool::resumeMessages(int group, double elapsed) const {
+  const std::deque<PostedRound>& rounds = posted_[size_t(group)];
+  std::vector<std::vector<double>> out;
+  for (size_t i = 0; i < rounds.size(); ++i) {
+    const bool gathering = i + ungathered_[size_t(group)] >= rounds.size();
+    if (!localDecisions() && !gathering) continue;  // held already
+    std::vector<double> msg;
+    if (active_ && !localDecisions())  // the round's exchange still needs the targets
+      for (size_t c = 0; c < chains_.size(); ++c)
+        if (groupOf(hosted()[c]) == group) msg.insert(msg.end(), chains_[c].targets(), chains_[c].targets() + levels());
+    const std::vector<double> t = tail(rounds[i].large, elapsed);
+    msg.insert(msg.end(), t.begin(), t.end());
+    out.push_back(std::move(msg));
+  }
+  return out;
 }
 
 }  // namespace relt

@@ -56,9 +56,12 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   }
   bootstrapCount_ = double(samples);
   largeSum_.assign(size_t(m), 0.0);
+  if (settings.normaliserLag < 1) throw std::invalid_argument("the normaliser lag must be at least 1 round");
   pendingLarge_.assign(size_t(roundGroups(settings.ladders)), LargeStepSums(m));  // defines groups()
-  postedLarge_ = pendingLarge_;
-  messageEpoch_.assign(size_t(groups()), 0);
+  posted_.resize(size_t(groups()));
+  held_.resize(size_t(groups()));
+  ungathered_.assign(size_t(groups()), 0);
+  epochRead_.assign(size_t(groups()), 1);  // epoch 0: the bootstrap describes the targets
   windowSeconds_.assign(size_t(groups()), std::vector<double>(size_t(ranks), 0.0));
   balanceDecisions_.assign(size_t(groups()), 0);
   epochOf_.assign(size_t(chainCount()), 0);
@@ -113,6 +116,7 @@ void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films, 
   if (group == 0) {
     if (family_.setRegularisationStep(stepsPerChain_)) {
       ++epoch_;
+      epochRead_.assign(epochRead_.size(), 0);
       bootstrapSum_.assign(bootstrapSum_.size(), 0.0);
       bootstrapCount_ = 0.0;
       largeSum_.assign(largeSum_.size(), 0.0);
@@ -156,50 +160,127 @@ std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double 
   msg.push_back(roundSeconds);
   msg.push_back(stop ? 1.0 : 0.0);
   msg.push_back(elapsed);
-  postedLarge_[size_t(group)] = large;
+  posted_[size_t(group)].push_back({large, epoch_});
   large = LargeStepSums(levels());
-  messageEpoch_[size_t(group)] = epoch_;
   return msg;
 }
 
-RoundAgreement ReplicaPool::finishRound(int group, const std::vector<std::vector<double>>& messages, uint64_t round) {
+std::vector<double> ReplicaPool::messageTail(const std::vector<double>& message) const {
+  const size_t n = active_ ? size_t(levels()) + 4 : 4;
+  if (message.size() < n) throw std::logic_error("a round message shorter than its tail");
+  return std::vector<double>(message.end() - std::ptrdiff_t(n), message.end());
+}
+
+std::vector<double> ReplicaPool::tail(const LargeStepSums& large, double elapsed) const {
+  std::vector<double> t;
+  if (active_) t = large.sum;
+  t.push_back(double(large.count));
+  t.push_back(0.0);  // seconds: load-balance windows start afresh
+  t.push_back(0.0);  // stop
+  t.push_back(elapsed);
+  return t;
+}
+
+size_t ReplicaPool::dueReadBacks(int group) const {
+  const std::deque<PostedRound>& rounds = posted_[size_t(group)];
+  const size_t n = rounds.size(), lag = size_t(settings_.normaliserLag);
+  if (!epochRead_[size_t(group)] && n > 0 && rounds.back().epoch == epoch_) return n;
+  return n >= lag ? n - lag + 1 : 0;
+}
+
+size_t ReplicaPool::inFlight(int group) const { return localDecisions() ? posted_[size_t(group)].size() : 0; }
+
+RoundAgreement ReplicaPool::finishRound(int group, const std::vector<std::vector<double>>& messages, uint64_t round,
+                                        const std::vector<std::vector<std::vector<double>>>& readBacks) {
   const int m = levels();
-  std::vector<double>& window = windowSeconds_[size_t(group)];
   RoundAgreement agreed;
-  for (size_t r = 0; r < messages.size(); ++r) {
-    const size_t n = messages[r].size();
-    agreed.elapsed = std::max(agreed.elapsed, messages[r][n - 1]);
-    agreed.stop |= messages[r][n - 2] > 0.0;
-    window[r] += messages[r][n - 3];
+  agreed.elapsed = agreedElapsed_;
+  if (active_) exchange(group, messages, round);
+
+  // The rounds due: held since their messages arrived, or with local decisions just arrived.
+  std::deque<std::vector<std::vector<double>>>& held = held_[size_t(group)];
+  const size_t due = dueReadBacks(group);
+  if (!localDecisions()) {
+    std::vector<std::vector<double>> tails;
+    for (const std::vector<double>& msg : messages) tails.push_back(messageTail(msg));
+    held.push_back(std::move(tails));
+    for (size_t i = 0; i < due; ++i) {
+      readBack(group, held.front(), agreed);
+      held.pop_front();
+    }
+  } else {
+    if (readBacks.size() != due) throw std::logic_error("finishRound needs the collectives of the rounds due");
+    for (const std::vector<std::vector<double>>& tails : readBacks) readBack(group, tails, agreed);
   }
   if (!active_) return agreed;
 
-  // The group's chains' targets: from the messages by global id, or with local decisions from the
-  // hosted chains themselves (no work that grows with the rank count). Then the large-step sums
-  // (dropped when the regularisation moved after they were taken).
-  const bool current = messageEpoch_[size_t(group)] == epoch_;
+  // Normalisers from the bootstrap and every large step read back so far, frozen until the next
+  // finished round (no samples since the regularisation moved: the previous ones stay).
+  const double n = bootstrapCount_ + largeCount_;
+  if (n > 0.0) {
+    std::vector<double> b(static_cast<size_t>(m));
+    for (int k = 0; k < m; ++k) b[size_t(k)] = (bootstrapSum_[size_t(k)] + largeSum_[size_t(k)]) / n;
+    estimator_.setNormalisers(b);
+  }
+
+  // The group's placement from the speeds measured since its last decision, once the slowest rank
+  // has stepped it for a window long enough that timing noise is small (and a gain under 1 % is
+  // still noise). The first windows are 1/8, 1/4 and 1/2 of it: an uneven start costs less.
+  std::vector<double>& window = windowSeconds_[size_t(group)];
+  const double slowest = *std::max_element(window.begin(), window.end());
+  uint64_t& decisions = balanceDecisions_[size_t(group)];
+  const double needed = settings_.balanceWindow / double(1 << std::max(0, 3 - int(decisions)));
+  if (settings_.balanceWindow > 0.0 && ranks_ > 1 && slowest * groups() >= needed) {
+    ++decisions;
+    moves_ = balanceMoves(group, window);
+    window.assign(window.size(), 0.0);
+  }
+  return agreed;
+}
+
+void ReplicaPool::readBack(int group, const std::vector<std::vector<double>>& tails, RoundAgreement& agreed) {
+  const int m = levels();
+  const PostedRound mine = posted_[size_t(group)].front();
+  posted_[size_t(group)].pop_front();
+  // Sums taken before the regularisation last moved belong to other targets: dropped.
+  const bool current = mine.epoch == epoch_;
+  if (current) epochRead_[size_t(group)] = 1;
+  std::vector<double>& window = windowSeconds_[size_t(group)];
+  for (size_t r = 0; r < tails.size(); ++r) {
+    const std::vector<double>& t = tails[r];
+    const size_t n = t.size();
+    agreed.elapsed = std::max(agreed.elapsed, t[n - 1]);
+    agreed.stop |= t[n - 2] > 0.0;
+    window[r] += t[n - 3];
+    if (!active_ || !current) continue;
+    for (int k = 0; k < m; ++k) largeSum_[size_t(k)] += t[size_t(k)];
+    largeCount_ += t[size_t(m)];
+  }
+  agreedElapsed_ = agreed.elapsed;
+}
+
+// Each ladder of the group this rank decides: Q(i, j) = q_i(state held by level j), one exchange,
+// new labels. Targets from the messages by global id, or with local decisions from the hosted
+// chains themselves (no work that grows with the rank count).
+void ReplicaPool::exchange(int group, const std::vector<std::vector<double>>& messages, uint64_t round) {
+  const int m = levels();
   std::vector<const double*> targetsOf;
-  if (!localDecisions()) targetsOf.assign(size_t(chainCount()), nullptr);
-  for (int r = 0; r < int(messages.size()); ++r) {
-    const double* msg = messages[size_t(r)].data();
-    if (!localDecisions())
+  if (!localDecisions()) {
+    targetsOf.assign(size_t(chainCount()), nullptr);
+    for (int r = 0; r < int(messages.size()); ++r) {
+      const double* msg = messages[size_t(r)].data();
       for (int c : hostedByRank_[size_t(r)]) {
         if (groupOf(c) != group) continue;
         targetsOf[size_t(c)] = msg;
         msg += m;
       }
-    if (!current) continue;
-    for (int k = 0; k < m; ++k) largeSum_[size_t(k)] += msg[k];
-    largeCount_ += msg[m];
+    }
   }
   auto targets = [&](int c) {
     return localDecisions() ? chains_[size_t(localIndex_[size_t(c)])].targets() : targetsOf[size_t(c)];
   };
-
-  // Each ladder of the group this rank decides: Q(i, j) = q_i(state held by level j), one exchange,
-  // new labels.
   std::vector<int> holder(static_cast<size_t>(m));
-  auto exchange = [&](int ladder) {
+  auto decide = [&](int ladder) {
     const int first = ladder * m;
     for (int c = first; c < first + m; ++c) holder[size_t(levelOf_[size_t(c)])] = c;
     TargetMatrix q(m);
@@ -215,33 +296,11 @@ RoundAgreement ReplicaPool::finishRound(int group, const std::vector<std::vector
   };
   if (localDecisions()) {
     for (int c : hosted())  // whole ladders: each named by its first chain
-      if (c % m == 0 && groupOf(c) == group) exchange(c / m);
+      if (c % m == 0 && groupOf(c) == group) decide(c / m);
   } else {
-    for (int ladder = group; ladder < settings_.ladders; ladder += groups()) exchange(ladder);
+    for (int ladder = group; ladder < settings_.ladders; ladder += groups()) decide(ladder);
   }
   for (size_t i = 0; i < chains_.size(); ++i) chains_[i].setLevel(levelOf_[size_t(hosted()[i])]);
-
-  // Normalisers from the bootstrap and every large step gathered so far, frozen until the next
-  // finished round (no samples since the regularisation moved: the previous ones stay).
-  const double n = bootstrapCount_ + largeCount_;
-  if (n > 0.0) {
-    std::vector<double> b(static_cast<size_t>(m));
-    for (int k = 0; k < m; ++k) b[size_t(k)] = (bootstrapSum_[size_t(k)] + largeSum_[size_t(k)]) / n;
-    estimator_.setNormalisers(b);
-  }
-
-  // The group's placement from the speeds measured since its last decision, once the slowest rank
-  // has stepped it for a window long enough that timing noise is small (and a gain under 1 % is
-  // still noise). The first windows are 1/8, 1/4 and 1/2 of it: an uneven start costs less.
-  const double slowest = *std::max_element(window.begin(), window.end());
-  uint64_t& decisions = balanceDecisions_[size_t(group)];
-  const double needed = settings_.balanceWindow / double(1 << std::max(0, 3 - int(decisions)));
-  if (settings_.balanceWindow > 0.0 && ranks_ > 1 && slowest * groups() >= needed) {
-    ++decisions;
-    moves_ = balanceMoves(group, window);
-    window.assign(window.size(), 0.0);
-  }
-  return agreed;
 }
 
 std::vector<ChainMove> ReplicaPool::balanceMoves(int group, const std::vector<double>& seconds) const {

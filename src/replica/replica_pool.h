@@ -8,6 +8,7 @@
 // keyed by seed, ladder and round) and updates the level labels; states stay where they are
 // except when load balancing moves chains. Rank-agnostic: the image depends on (seed, L, M, steps).
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <optional>
 #include <string_view>
@@ -64,11 +65,24 @@ class ReplicaPool {
   // `stop`: this rank was asked to stop (a signal); every rank then ends after this round.
   std::vector<double> roundMessage(int group, double elapsed, double roundSeconds, bool stop = false);
   size_t messageLength(int group, int rank) const;
-  // Reads every rank's message (rank order) of the group's round `round`: exchanges in its
-  // ladders, new level labels, new normalisers, and after every balance window a new placement of
-  // the group's chains from the ranks' speeds (moves planned). Returns the largest elapsed time
-  // and whether any rank asked to stop.
-  RoundAgreement finishRound(int group, const std::vector<std::vector<double>>& messages, uint64_t round);
+  // Ends the group's round `round`: exchanges in its ladders (targets from `messages`, every rank's
+  // message of this round in rank order, or with local decisions from the hosted chains) and new
+  // level labels; then reads back the group's dueReadBacks() oldest rounds (spread: held since their
+  // messages arrived; local decisions: `readBacks`, their collectives, oldest first): large-step
+  // sums into the normalisers, and after every balance window a new placement of the group's chains
+  // from the ranks' speeds (moves planned). Returns the largest elapsed time read back so far and
+  // whether a rank asked to stop in the messages read back.
+  RoundAgreement finishRound(int group, const std::vector<std::vector<double>>& messages, uint64_t round,
+                             const std::vector<std::vector<std::vector<double>>>& readBacks = {});
+  // How many of the group's posted rounds its next finishRound reads back: the one that is lag
+  // rounds old, or, in the first round of the group after the regularisation moved, every one
+  // posted (the normalisers must describe the new targets at once, as with a lag of 1). With local
+  // decisions the loop waits for that many collectives; spread waits for this round's (targets).
+  size_t dueReadBacks(int group) const;
+  // Rounds of the group posted and not read back yet (lag - 1 between rounds once running).
+  size_t unread(int group) const { return posted_[size_t(group)].size(); }
+  // Collectives still pending when the loop ends.
+  size_t inFlight(int group) const;
 
   // Chain migration after finishRound, the same plan on every rank: the sender exports each chain
   // it gives, the receiver imports it, then every rank commits (the placement changes).
@@ -83,11 +97,14 @@ class ReplicaPool {
   // of the round before is pending (RoundLoopHooks::roundDone). This rank's part: its chains by
   // global id, the sums every rank shares, its share of the pending messages and its counters.
   // restore() reads every rank's part of a checkpoint written with any number of ranks and puts
-  // the render back where it was; the round loop then posts the pending messages again
+  // the render back where it was; the round loop then posts resumeMessages() again
   // (RoundLoopStart). Placement and load-balance windows start afresh (the image does not depend
   // on them).
   std::vector<uint64_t> checkpointPart() const;
   void restore(const std::vector<std::vector<uint64_t>>& parts);
+  // After restore(): this rank's messages of the group's rounds whose collectives were pending,
+  // oldest first, for the loop to post again (`elapsed`: the resumed elapsed time).
+  std::vector<std::vector<double>> resumeMessages(int group, double elapsed) const;
   uint64_t stepsPerChain() const { return stepsPerChain_; }
 
   // Diagnostics. Exchange tallies and round trips are the same on every rank (with local
@@ -104,6 +121,13 @@ class ReplicaPool {
   const std::vector<int>& hosted() const { return hostedByRank_[size_t(rank_)]; }
   void reindex();  // localIndex_ from hosted()
   std::vector<ChainMove> balanceMoves(int group, const std::vector<double>& seconds) const;
+  void exchange(int group, const std::vector<std::vector<double>>& messages, uint64_t round);
+  // Reads back every rank's message tail (large-step sums and count, seconds, stop, elapsed) of the
+  // group's oldest round not read back yet.
+  void readBack(int group, const std::vector<std::vector<double>>& tails, RoundAgreement& agreed);
+  // A message's tail: its last levels() + 4 numbers (4 when inactive).
+  std::vector<double> messageTail(const std::vector<double>& message) const;
+  std::vector<double> tail(const LargeStepSums& large, double elapsed) const;
   // A hosted chain as it travels to another rank or into a checkpoint: ReplicaChain::serialize(),
   // then whether it owes a re-evaluation under targets that moved since its group last ran (which
   // draws from its stream), then its round-trip phase.
@@ -130,14 +154,25 @@ class ReplicaPool {
   std::vector<uint64_t> balanceDecisions_;  // per group
   uint64_t epoch_ = 0;                  // regularisation moves so far
   std::vector<uint64_t> epochOf_;       // every chain's: the epoch its state was last evaluated in
-  std::vector<uint64_t> messageEpoch_;  // per group: the epoch of its last message
   std::vector<int> levelOf_;            // every chain's level (kept identical on every rank)
   std::vector<double> bootstrapSum_;    // sum of q_k over the bootstrap
   double bootstrapCount_ = 0.0;
   std::vector<double> largeSum_;        // all ranks' large-step sums so far
   double largeCount_ = 0.0;
   std::vector<LargeStepSums> pendingLarge_;  // per group: this rank's, since the group's last message
-  std::vector<LargeStepSums> postedLarge_;   // per group: this rank's in its last message (checkpoints)
+  // This rank's large-step sums in a posted message, and the epoch they were taken in.
+  struct PostedRound {
+    LargeStepSums large;
+    uint64_t epoch = 0;
+  };
+  std::vector<std::deque<PostedRound>> posted_;  // per group: rounds posted, not read back, oldest first
+  // Spread: per group, every rank's message tail of the rounds gathered but not read back yet.
+  std::vector<std::deque<std::vector<std::vector<double>>>> held_;
+  double agreedElapsed_ = 0.0;  // the largest elapsed time read back so far
+  std::vector<char> epochRead_;  // per group: a round of the current epoch has been read back
+  // After restore(): per group, how many of posted_'s rounds were still being gathered at the
+  // checkpoint (their messages go out again with targets for spread placement).
+  std::vector<size_t> ungathered_;
   uint64_t stepsPerChain_ = 0;          // steps every chain has taken (regularisation schedule)
   ExchangeTally tally_;
   RoundTrips trips_;

@@ -61,6 +61,10 @@ struct ReplicaSettings {
   int ladders = 32;
   ExchangeOptions exchange;
   int exchangeInterval = 16;  // steps per chain between exchanges
+  // Rounds between taking large-step sums and using them in the normalisers: a group reads the
+  // messages of its round R at the end of its round R + lag - 1, so with packed placement a rank
+  // may run lag rounds ahead of the slowest before it waits (docs/SCALING.md).
+  int normaliserLag = 32;
   Placement placement = Placement::Auto;  // where chains start
   double balanceWindow = 0.25;  // seconds of stepping (slowest rank) between placement decisions (0: never)
   double beta = 1.0;          // MIS over levels: 1 balance, 2 power heuristic

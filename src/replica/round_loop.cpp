@@ -44,9 +44,16 @@ struct Stepper {
   // Returns the agreed elapsed time; a stop request of any group's round is remembered (every rank
   // reads the same messages in the same order, so all see it at the same point).
   double finish(int group, uint64_t round) {
-    const std::vector<std::vector<double>> messages = transport.wait(group);
+    // Spread: this round's messages (its exchanges need the targets); local decisions: the
+    // collectives of the rounds whose sums are due.
+    std::vector<std::vector<double>> messages;
+    std::vector<std::vector<std::vector<double>>> readBacks;
+    if (!pool.localDecisions())
+      messages = transport.wait(group);
+    else
+      for (size_t i = pool.dueReadBacks(group); i > 0; --i) readBacks.push_back(transport.wait(group));
     const auto t0 = Clock::now();
-    const RoundAgreement agreed = pool.finishRound(group, messages, round);
+    const RoundAgreement agreed = pool.finishRound(group, messages, round, readBacks);
     stopRequested |= agreed.stop;
     const double elapsed = agreed.elapsed;
     finishes += 1.0;
@@ -74,10 +81,11 @@ RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule,
   if (start.rounds == 0) {
     for (int g = 0; g < groups; ++g) s.stepAndPost(g, 0);
   } else {
-    // As at roundDone of the checkpoint: groups 1 .. G-1 owe round rounds - 1's collective, and
-    // group 0 steps round `rounds` next.
-    for (int g = 1; g < groups; ++g)
-      transport.post(g, pool.roundMessage(g, hooks.elapsed(), 0.0), s.lengths[size_t(g)]);
+    // As at roundDone of the checkpoint: the collectives of the rounds not read back yet go out
+    // again (group 0's last round is finished, the other groups' is not), and group 0 steps round
+    // `rounds` next.
+    for (int g = 0; g < groups; ++g)
+      for (std::vector<double>& msg : pool.resumeMessages(g, start.elapsed)) transport.post(g, std::move(msg), s.lengths[size_t(g)]);
     s.stepAndPost(0, start.rounds);
     first = 1;
   }
@@ -85,17 +93,24 @@ RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule,
   for (;;) {
     for (int g = first; g < groups; ++g) {
       // Group 0 finishes the round it just stepped; the others the round before (still pending).
-      const double now = s.finish(g, g == 0 ? out.rounds : out.rounds - 1);
+      // Elapsed times arrive with the messages read back, lag rounds late: never backwards.
+      const double now = std::max(out.elapsed, s.finish(g, g == 0 ? out.rounds : out.rounds - 1));
       if (g == 0) {
         // Every group has stepped rounds + 1 rounds; group 0's messages give the agreed time.
         ++out.rounds;
         lastRound = now - out.elapsed;
         out.elapsed = now;
         out.stopped = s.stopRequested;
-        const bool more = !s.stopRequested && schedule.anotherRound(out.rounds, out.elapsed, lastRound);
+        // The agreed time is that of the rounds read back; the rounds stepped since took about as
+        // long each (the same on every rank: both are agreed).
+        const double projected = out.elapsed + lastRound * double(pool.unread(0));
+        const bool more = !s.stopRequested && schedule.anotherRound(out.rounds, projected, lastRound);
         if (hooks.roundDone) hooks.roundDone(out.rounds, out.elapsed, more);
         if (!more) {
           for (int h = 1; h < groups; ++h) s.finish(h, out.rounds - 1);
+          // Rounds whose messages were still travelling: every rank takes part, nobody reads them.
+          for (int h = 0; h < groups; ++h)
+            for (size_t i = pool.inFlight(h); i > 0; --i) transport.wait(h);
           out.stepMean = s.sum / s.steppings;
           out.finishMean = s.finishSum / s.finishes;
           out.stepDeviation = std::sqrt(std::max(0.0, s.sumSquares / s.steppings - out.stepMean * out.stepMean));
@@ -111,9 +126,13 @@ RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule,
 
 void LocalTransport::post(int group, std::vector<double> mine, const std::vector<size_t>&) {
   if (posted_.size() <= size_t(group)) posted_.resize(size_t(group) + 1);
-  posted_[size_t(group)] = std::move(mine);
+  posted_[size_t(group)].push_back(std::move(mine));
 }
 
-std::vector<std::vector<double>> LocalTransport::wait(int group) { return {std::move(posted_[size_t(group)])}; }
+std::vector<std::vector<double>> LocalTransport::wait(int group) {
+  std::vector<std::vector<double>> out{std::move(posted_[size_t(group)].front())};
+  posted_[size_t(group)].pop_front();
+  return out;
+}
 
 }  // namespace relt

@@ -8,6 +8,7 @@
 // takes the same steps per round; exchanges, normalisers and placement follow the same fixed order
 // on every rank, so the image does not depend on timing or rank count.
 #include <cstdint>
+#include <deque>
 #include <functional>
 #include <vector>
 
@@ -22,8 +23,9 @@ class RoundTransport {
  public:
   virtual ~RoundTransport() = default;
   // Starts the collective of a group's round: every rank's message, rank r's `lengths[r]` long.
+  // A group may have several in flight (ReplicaSettings::normaliserLag).
   virtual void post(int group, std::vector<double> mine, const std::vector<size_t>& lengths) = 0;
-  // Completes it: every rank's message, in rank order.
+  // Completes the group's oldest: every rank's message, in rank order.
   virtual std::vector<std::vector<double>> wait(int group) = 0;
   // Carries out pool.plannedMoves() (chain states travel) and commits them on every rank.
   virtual void migrate(ReplicaPool& pool) = 0;
@@ -76,7 +78,7 @@ class LocalTransport final : public RoundTransport {
   void migrate(ReplicaPool& pool) override { pool.commitMoves(); }
 
  private:
-  std::vector<std::vector<double>> posted_;
+  std::vector<std::deque<std::vector<double>>> posted_;
 };
 
 }  // namespace relt
