@@ -125,7 +125,7 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
       if (count > uint64_t(settings_.normaliserLag) || (r > 0 && count != posted[0][size_t(g)].size()))
         throw std::runtime_error("the checkpoint's pending rounds do not match");
       for (uint64_t i = 0; i < count; ++i) {
-        PostedRound& p = rounds.emplace_back(PostedRound{LargeStepSums(m), 0});
+        PostedRound& p = rounds.emplace_back(PostedRound{LargeStepSums(m), 0, 0});
         p.large.sum = in.f64s(size_t(m));
         p.large.count = in.u64();
         p.epoch = in.u64();
@@ -178,7 +178,7 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
           for (int k = 0; k < m; ++k) shares[size_t(q)].sum[size_t(k)] += s.sum[size_t(k)];
           shares[size_t(q)].count += s.count;
         }
-      posted_[size_t(g)].push_back({shares[size_t(rank_)], rounds[i].epoch});
+      posted_[size_t(g)].push_back({shares[size_t(rank_)], rounds[i].epoch, placementVersion_[size_t(g)]});
       if (localDecisions() || i + ungathered_[size_t(g)] >= rounds.size()) continue;
       std::vector<std::vector<double>> tails;
       for (const LargeStepSums& s : shares) tails.push_back(tail(s, 0.0));

@@ -62,6 +62,7 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   held_.resize(size_t(groups()));
   ungathered_.assign(size_t(groups()), 0);
   epochRead_.assign(size_t(groups()), 1);  // epoch 0: the bootstrap describes the targets
+  placementVersion_.assign(size_t(groups()), 0);
   windowSeconds_.assign(size_t(groups()), std::vector<double>(size_t(ranks), 0.0));
   balanceDecisions_.assign(size_t(groups()), 0);
   epochOf_.assign(size_t(chainCount()), 0);
@@ -160,7 +161,7 @@ std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double 
   msg.push_back(roundSeconds);
   msg.push_back(stop ? 1.0 : 0.0);
   msg.push_back(elapsed);
-  posted_[size_t(group)].push_back({large, epoch_});
+  posted_[size_t(group)].push_back({large, epoch_, placementVersion_[size_t(group)]});
   large = LargeStepSums(levels());
   return msg;
 }
@@ -245,13 +246,14 @@ void ReplicaPool::readBack(int group, const std::vector<std::vector<double>>& ta
   // Sums taken before the regularisation last moved belong to other targets: dropped.
   const bool current = mine.epoch == epoch_;
   if (current) epochRead_[size_t(group)] = 1;
+  const bool samePlacement = mine.placement == placementVersion_[size_t(group)];
   std::vector<double>& window = windowSeconds_[size_t(group)];
   for (size_t r = 0; r < tails.size(); ++r) {
     const std::vector<double>& t = tails[r];
     const size_t n = t.size();
     agreed.elapsed = std::max(agreed.elapsed, t[n - 1]);
     agreed.stop |= t[n - 2] > 0.0;
-    window[r] += t[n - 3];
+    if (samePlacement) window[r] += t[n - 3];
     if (!active_ || !current) continue;
     for (int k = 0; k < m; ++k) largeSum_[size_t(k)] += t[size_t(k)];
     largeCount_ += t[size_t(m)];
@@ -348,6 +350,7 @@ void ReplicaPool::importChain(int chain, const std::vector<uint64_t>& state) {
 }
 
 void ReplicaPool::commitMoves() {
+  if (!moves_.empty()) ++placementVersion_[size_t(groupOf(moves_.front().chain))];
   std::vector<std::vector<int>> next = applyMoves(hostedByRank_, moves_);
   std::vector<ReplicaChain> chains;
   chains.reserve(next[size_t(rank_)].size());

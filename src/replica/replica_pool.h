@@ -164,12 +164,17 @@ class ReplicaPool {
   struct PostedRound {
     LargeStepSums large;
     uint64_t epoch = 0;
+    uint64_t placement = 0;  // the group's placement version it was stepped in
   };
   std::vector<std::deque<PostedRound>> posted_;  // per group: rounds posted, not read back, oldest first
   // Spread: per group, every rank's message tail of the rounds gathered but not read back yet.
   std::vector<std::deque<std::vector<std::vector<double>>>> held_;
   double agreedElapsed_ = 0.0;  // the largest elapsed time read back so far
   std::vector<char> epochRead_;  // per group: a round of the current epoch has been read back
+  // Per group: how often its chains moved. Stepping times of rounds stepped before the last move
+  // describe the old placement and stay out of the balance window (with a lag they would be read
+  // after the move and ask for it again).
+  std::vector<uint64_t> placementVersion_;
   // After restore(): per group, how many of posted_'s rounds were still being gathered at the
   // checkpoint (their messages go out again with targets for spread placement).
   std::vector<size_t> ungathered_;

@@ -238,6 +238,41 @@ TEST(RoundLoop, AStopRequestEndsTheLoopAfterTheCurrentRound) {
   }
 }
 
+// With the normaliser lag the stepping times of a round arrive lag rounds late: those stepped
+// before chains last moved describe the old placement and must not ask for the move again. Rank 1
+// takes three times as long per chain (times in proportion to the chains it hosts): a quarter of
+// each group's chains end there after one decision per group, and nothing moves afterwards.
+TEST(ReplicaPool, BalancingUnderALagMovesOnceForOneSpeedDifference) {
+  Fixture fx;
+  fx.settings.ladders = 8;  // 40 chains, 20 per group, 10 per rank and group at the start
+  fx.settings.placement = Placement::Spread;
+  fx.settings.balanceWindow = 1.0;
+  const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+  ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
+  std::vector<Film> fa(1, Film(16, 12)), fb(1, Film(16, 12));
+  Collectives c(a.groups());
+  auto hostedInGroup = [&](int rank, int g) {
+    int n = 0;
+    for (int ch = 0; ch < a.chainCount(); ++ch) n += a.groupOf(ch) == g && (rank == 0 ? a.hosts(ch) : b.hosts(ch));
+    return n;
+  };
+  for (uint64_t r = 0; r < uint64_t(fx.settings.normaliserLag) + 60; ++r)
+    for (int g = 0; g < a.groups(); ++g) {
+      a.runRound(g, 1, fa);
+      b.runRound(g, 1, fb);
+      const double s0 = 0.01 * hostedInGroup(0, g), s1 = 0.03 * hostedInGroup(1, g);
+      c.post(g, {a.roundMessage(g, 0.0, s0), b.roundMessage(g, 0.0, s1)});
+      c.finish({&a, &b}, g, r);
+      ASSERT_EQ(a.plannedMoves(), b.plannedMoves());
+      for (const ChainMove& m : a.plannedMoves())
+        (m.to == 0 ? a : b).importChain(m.chain, (m.to == 0 ? b : a).exportChain(m.chain));
+      a.commitMoves();
+      b.commitMoves();
+    }
+  for (int g = 0; g < a.groups(); ++g) EXPECT_EQ(hostedInGroup(0, g), 15) << "group " << g;
+  EXPECT_EQ(a.chainMoves(), 10u) << "5 chains per group, moved once";
+}
+
 // The scaling model replays each group round's stepping time: the loop records the first
 // traceLimit of them, in loop order, and nothing without a limit.
 TEST(RoundLoop, RecordsTheSteppingTimeOfTheFirstGroupRounds) {
