@@ -6,7 +6,9 @@
 // chains' targets under every level, its large-step sums, its stepping time and its elapsed time.
 // From all messages every rank runs the same exchange per ladder of the group (a per-ladder stream
 // keyed by seed, ladder and round) and updates the level labels; states stay where they are
-// except when load balancing moves chains. Rank-agnostic: the image depends on (seed, L, M, steps).
+// except when load balancing moves chains. The large-step sums, times and stop requests of a round
+// are read back ReplicaSettings::normaliserLag rounds later, by every placement at the same point.
+// Rank-agnostic: the image depends on (seed, L, M, steps, lag).
 #include <cstdint>
 #include <deque>
 #include <functional>
