@@ -96,6 +96,12 @@ LobeValue evalLocal(const Material& mat, const Frame& frame, const Vec3& ng, flo
                     const Vec3& woW, const Vec3& wiW, TransportMode mode) {
   const float go = glm::dot(woW, ng), gi = glm::dot(wiW, ng);
   if (go == 0.0f || gi == 0.0f) return {};
+  if (mat.kind == MaterialKind::Lambert) {
+    // The opaque case below with only the normal components, which is all Lambert needs.
+    const float co = glm::dot(woW, frame.n), ci = glm::dot(wiW, frame.n);
+    if (onPositiveSide(go) != onPositiveSide(gi) || co * ci <= 0.0f) return {};
+    return {mat.baseColor * kInvPi, std::abs(ci) * kInvPi};
+  }
   Vec3 wo = frame.toLocal(woW), wi = frame.toLocal(wiW);
   if (mat.kind == MaterialKind::Dielectric) {
     // Both directions must be on the same side in the shading frame as geometrically: the side
@@ -109,7 +115,6 @@ LobeValue evalLocal(const Material& mat, const Frame& frame, const Vec3& ng, flo
     wo.z = -wo.z;
     wi.z = -wi.z;
   }
-  if (mat.kind == MaterialKind::Lambert) return {mat.baseColor * kInvPi, wi.z * kInvPi};
   if (alpha == 0.0f) return {};
   return roughConductor(mat.baseColor, MicrofacetDistribution(type, alpha), wo, wi);
 }
@@ -127,8 +132,6 @@ Bsdf::Bsdf(const Material& material, const Vec3& shadingN, const Vec3& geometric
   alpha_ = rough_.alpha > 0.0f ? std::max(rough_.alpha, kMinAlpha) : 0.0f;
 }
 
-bool Bsdf::isDelta() const { return alpha_ == 0.0f && material_->kind != MaterialKind::Lambert; }
-
 Color Bsdf::eval(const Vec3& wo, const Vec3& wi, TransportMode mode) const {
   return evalLocal(*material_, frame_, ng_, alpha_, rough_.distribution, wo, wi, mode).f;
 }
@@ -145,17 +148,26 @@ Bsdf::Value Bsdf::evaluate(const Vec3& wo, const Vec3& wi, TransportMode mode) c
 std::optional<BsdfSample> Bsdf::sample(const Vec3& woW, const Vec2& u, float uLobe, TransportMode mode) const {
   const Material& mat = *material_;
   const float go = glm::dot(woW, ng_);
-  const Vec3 wo = frame_.toLocal(woW);
-  if (go == 0.0f || wo.z == 0.0f) return std::nullopt;
-  const float side = wo.z > 0.0f ? 1.0f : -1.0f;
-  const Vec3 woUp(wo.x, wo.y, std::abs(wo.z));  // wo mirrored into the upper hemisphere
-
   // Accepts a local direction if it lies on the side of ng the lobe requires.
   auto toWorldChecked = [&](const Vec3& wi, bool sameSide, Vec3* wiW) {
     *wiW = frame_.toWorld(wi);
     const float gi = glm::dot(*wiW, ng_);
     return gi != 0.0f && (onPositiveSide(gi) == onPositiveSide(go)) == sameSide;
   };
+  if (mat.kind == MaterialKind::Lambert) {  // only wo's normal component matters
+    const float woZ = glm::dot(woW, frame_.n);
+    if (go == 0.0f || woZ == 0.0f) return std::nullopt;
+    Vec3 wi = cosineHemisphere(u);
+    if (wi.z <= 0.0f) return std::nullopt;
+    if (woZ < 0.0f) wi.z = -wi.z;
+    Vec3 wiW;
+    if (!toWorldChecked(wi, true, &wiW)) return std::nullopt;
+    return BsdfSample{wiW, mat.baseColor * kInvPi, std::abs(wi.z) * kInvPi, false};
+  }
+  const Vec3 wo = frame_.toLocal(woW);
+  if (go == 0.0f || wo.z == 0.0f) return std::nullopt;
+  const float side = wo.z > 0.0f ? 1.0f : -1.0f;
+  const Vec3 woUp(wo.x, wo.y, std::abs(wo.z));  // wo mirrored into the upper hemisphere
   auto finish = [&](const Vec3& wiW) -> std::optional<BsdfSample> {
     const LobeValue v = evalLocal(mat, frame_, ng_, alpha_, rough_.distribution, woW, wiW, mode);
     if (v.pdf <= 0.0f || isBlack(v.f)) return std::nullopt;
@@ -164,13 +176,8 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& woW, const Vec2& u, float uLo
 
   Vec3 wiW;
   switch (mat.kind) {
-    case MaterialKind::Lambert: {
-      Vec3 wi = cosineHemisphere(u);
-      if (wi.z <= 0.0f) return std::nullopt;
-      wi.z *= side;
-      if (!toWorldChecked(wi, true, &wiW)) return std::nullopt;
-      return BsdfSample{wiW, mat.baseColor * kInvPi, std::abs(wi.z) * kInvPi, false};
-    }
+    case MaterialKind::Lambert:
+      break;  // above
     case MaterialKind::Conductor: {
       if (alpha_ == 0.0f) {
         // Perfect mirror: the delta's coefficient is F, divided by |cos wi| per BsdfSample's contract.

@@ -38,7 +38,7 @@ class Bsdf {
   Bsdf(const Material& material, const Vec3& shadingN, const Vec3& geometricN, Roughness override);
 
   // True when every lobe is a Dirac delta (smooth mirror or glass): eval and pdf return zero.
-  bool isDelta() const;
+  bool isDelta() const { return alpha_ == 0.0f && material_->kind != MaterialKind::Lambert; }
   Color eval(const Vec3& wo, const Vec3& wi, TransportMode mode) const;
   // Density of sampling wi given wo. The reverse density is pdf(wi, wo) (with the mode swapped
   // where relevant: the density itself does not depend on the mode).
