@@ -51,7 +51,8 @@ RayTracer::RayTracer(const Scene& scene) : scene_(scene) {
     flatNs_[i] = n0 != n1 || n0 != n2 ? Vec3(0.0f) : len2 > 1e-12f ? n0 / std::sqrt(len2) : ng_[i];
   }
   const Vec3 ext = glm::max(glm::abs(scene.bounds.lo), glm::abs(scene.bounds.hi));
-  epsilonScale_ = scene.bounds.empty() ? 1.0f : std::max(1.0f, std::max(ext.x, std::max(ext.y, ext.z)));
+  const float scale = scene.bounds.empty() ? 1.0f : std::max(1.0f, std::max(ext.x, std::max(ext.y, ext.z)));
+  epsilonFloor_ = std::max(1.0f, 0.01f * scale);
 
   rtcScene_ = rtcNewScene(device_);
   rtcSetSceneBuildQuality(rtcScene_, RTC_BUILD_QUALITY_HIGH);
@@ -81,30 +82,11 @@ RayTracer::~RayTracer() {
   if (device_) rtcReleaseDevice(device_);
 }
 
-Vec3 RayTracer::offsetOrigin(const Vec3& p, const Vec3& ng, const Vec3& dir) const {
-  // Offset proportional to the coordinates' magnitude: float spacing grows with |p|.
-  const Vec3 a = glm::abs(p);
-  const float eps = kRayEpsilon * std::max(epsilonScale_ * 0.01f, std::max(1.0f, std::max(a.x, std::max(a.y, a.z))));
-  return p + (glm::dot(ng, dir) >= 0.0f ? eps : -eps) * ng;
-}
-
-SurfacePoint RayTracer::surfacePoint(uint32_t t, float b1, float b2) const {
-  const Triangle& tri = scene_.triangles[t];
-  const float b0 = 1.0f - b1 - b2;
-  SurfacePoint sp;
-  sp.p = b0 * scene_.positions[tri.v[0]] + b1 * scene_.positions[tri.v[1]] + b2 * scene_.positions[tri.v[2]];
-  sp.ng = ng_[t];
-  if (flatNs_[t].x != 0.0f || flatNs_[t].y != 0.0f || flatNs_[t].z != 0.0f) {
-    sp.ns = flatNs_[t];
-  } else {
-    const Vec3 n = b0 * scene_.normals[tri.v[0]] + b1 * scene_.normals[tri.v[1]] + b2 * scene_.normals[tri.v[2]];
-    const float len2 = glm::dot(n, n);
-    // Degenerate interpolated normals fall back to the geometric one (flat shading).
-    sp.ns = len2 > 1e-12f ? n / std::sqrt(len2) : sp.ng;
-  }
-  sp.triangle = t;
-  sp.material = tri.material;
-  return sp;
+Vec3 RayTracer::interpolatedNormal(const Triangle& tri, float b0, float b1, float b2, const Vec3& ng) const {
+  const Vec3 n = b0 * scene_.normals[tri.v[0]] + b1 * scene_.normals[tri.v[1]] + b2 * scene_.normals[tri.v[2]];
+  const float len2 = glm::dot(n, n);
+  // Degenerate interpolated normals fall back to the geometric one (flat shading).
+  return len2 > 1e-12f ? n / std::sqrt(len2) : ng;
 }
 
 bool RayTracer::intersect(const Ray& ray, SurfacePoint& hit, float& distance) const {

@@ -41,26 +41,45 @@ class RayTracer {
   // Same with a punctual point (no surface at the far end).
   bool occludedToPoint(const Vec3& from, const Vec3& fromNg, const Vec3& point) const;
 
-  // Ray origin nudged off the surface to the side the direction goes to.
-  Vec3 offsetOrigin(const Vec3& p, const Vec3& ng, const Vec3& dir) const;
+  // Ray origin nudged off the surface to the side the direction goes to, by an offset proportional
+  // to the coordinates' magnitude (float spacing grows with |p|). Inline: several per path vertex.
+  Vec3 offsetOrigin(const Vec3& p, const Vec3& ng, const Vec3& dir) const {
+    const Vec3 a = glm::abs(p);
+    const float eps = kRayEpsilon * std::max(epsilonFloor_, std::max(a.x, std::max(a.y, a.z)));
+    return p + (glm::dot(ng, dir) >= 0.0f ? eps : -eps) * ng;
+  }
   Ray spawn(const SurfacePoint& sp, const Vec3& dir) const { return Ray{offsetOrigin(sp.p, sp.ng, dir), dir, INFINITY}; }
 
   const Scene& scene() const { return scene_; }
   float triangleArea(uint32_t t) const { return area_[t]; }
   const Vec3& triangleNormal(uint32_t t) const { return ng_[t]; }
   // Surface point at barycentrics (b1, b2) of triangle t.
-  SurfacePoint surfacePoint(uint32_t t, float b1, float b2) const;
+  SurfacePoint surfacePoint(uint32_t t, float b1, float b2) const {
+    const Triangle& tri = scene_.triangles[t];
+    const float b0 = 1.0f - b1 - b2;
+    SurfacePoint sp;
+    sp.p = b0 * scene_.positions[tri.v[0]] + b1 * scene_.positions[tri.v[1]] + b2 * scene_.positions[tri.v[2]];
+    sp.ng = ng_[t];
+    const Vec3& flat = flatNs_[t];
+    sp.ns = flat.x != 0.0f || flat.y != 0.0f || flat.z != 0.0f ? flat : interpolatedNormal(tri, b0, b1, b2, sp.ng);
+    sp.triangle = t;
+    sp.material = tri.material;
+    return sp;
+  }
 
   uint64_t rayCount() const { return rays_; }
 
  private:
+  // Unit shading normal interpolated from the vertex normals (the geometric one if degenerate).
+  Vec3 interpolatedNormal(const Triangle& tri, float b0, float b1, float b2, const Vec3& ng) const;
+
   const Scene& scene_;
   RTCDevice device_ = nullptr;
   RTCScene rtcScene_ = nullptr;
   std::vector<Vec3> ng_;
   std::vector<float> area_;
   std::vector<Vec3> flatNs_;  // unit shading normal of triangles whose vertex normals agree, else 0
-  float epsilonScale_ = 1.0f;
+  float epsilonFloor_ = 1.0f;  // offsets never shrink below this scale: max(1, 1 % of the scene's extent)
   mutable uint64_t rays_ = 0;
 };
 
