@@ -97,7 +97,9 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   PssEvaluator eval(renderer.context(), settings.width, settings.height);
 
   // Bootstrap: sample i on rank i mod P; every rank then holds every sample's features.
+  const auto bootstrapStart = Clock::now();
   std::vector<double> features = bootstrapFeatures(eval, rs.family, settings.seed, rs.bootstrap, session.rank(), session.size());
+  const double bootstrapSeconds = allreduceMax(since(bootstrapStart));
   allreduceSum(features);
   ReplicaPool pool(eval, rs, settings.seed, features, session.rank(), session.size());
   films.assign(rs.perLevel ? size_t(pool.levels()) : 1, Film(settings.width, settings.height));
@@ -106,6 +108,10 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   ReplicaSchedule schedule(area, pool.chainCount(), rs.exchangeInterval, settings.seconds,
                            settings.mutationsPerPixel.value_or(16.0));
   RoundLoopStart resumed;
+  // A bootstrap sample costs about what a mutation does: the agreed first guess of a round's
+  // duration, until the lagged elapsed times of two rounds have come back.
+  const double perSample = bootstrapSeconds / std::max(1.0, double(rs.bootstrap) / session.size());
+  resumed.secondsPerRound = perSample * rs.exchangeInterval * double(pool.chainCount()) / session.size();
   if (checkpoint) {
     checkpoint->restoreFilms(films);
     try {

@@ -63,6 +63,7 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   ungathered_.assign(size_t(groups()), 0);
   epochRead_.assign(size_t(groups()), 1);  // epoch 0: the bootstrap describes the targets
   placementVersion_.assign(size_t(groups()), 0);
+  readBackCount_.assign(size_t(groups()), 0);
   windowSeconds_.assign(size_t(groups()), std::vector<double>(size_t(ranks), 0.0));
   balanceDecisions_.assign(size_t(groups()), 0);
   epochOf_.assign(size_t(chainCount()), 0);
@@ -243,6 +244,7 @@ void ReplicaPool::readBack(int group, const std::vector<std::vector<double>>& ta
   const int m = levels();
   const PostedRound mine = posted_[size_t(group)].front();
   posted_[size_t(group)].pop_front();
+  ++readBackCount_[size_t(group)];
   // Sums taken before the regularisation last moved belong to other targets: dropped.
   const bool current = mine.epoch == epoch_;
   if (current) epochRead_[size_t(group)] = 1;

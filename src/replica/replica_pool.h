@@ -81,8 +81,10 @@ class ReplicaPool {
   // posted (the normalisers must describe the new targets at once, as with a lag of 1). With local
   // decisions the loop waits for that many collectives; spread waits for this round's (targets).
   size_t dueReadBacks(int group) const;
-  // Rounds of the group posted and not read back yet (lag - 1 between rounds once running).
+  // Rounds of the group posted and not read back yet (lag - 1 between rounds once running), and
+  // read back so far by this pool (since it was made or restored).
   size_t unread(int group) const { return posted_[size_t(group)].size(); }
+  uint64_t roundsReadBack(int group) const { return readBackCount_[size_t(group)]; }
   // Collectives still pending when the loop ends.
   size_t inFlight(int group) const;
 
@@ -177,6 +179,7 @@ class ReplicaPool {
   // describe the old placement and stay out of the balance window (with a lag they would be read
   // after the move and ask for it again).
   std::vector<uint64_t> placementVersion_;
+  std::vector<uint64_t> readBackCount_;  // per group
   // After restore(): per group, how many of posted_'s rounds were still being gathered at the
   // checkpoint (their messages go out again with targets for spread placement).
   std::vector<size_t> ungathered_;

@@ -89,22 +89,28 @@ RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule,
     s.stepAndPost(0, start.rounds);
     first = 1;
   }
-  double lastRound = 0.0;
+  // The agreed time: the latest elapsed time read back, and the duration of a round from the last
+  // two read back (the same on every rank), which carries it over the rounds not read back yet.
+  double perRound = start.secondsPerRound, agreedAt = start.elapsed;
+  uint64_t readAt = pool.roundsReadBack(0);
   for (;;) {
     for (int g = first; g < groups; ++g) {
       // Group 0 finishes the round it just stepped; the others the round before (still pending).
-      // Elapsed times arrive with the messages read back, lag rounds late: never backwards.
-      const double now = std::max(out.elapsed, s.finish(g, g == 0 ? out.rounds : out.rounds - 1));
+      const double agreed = s.finish(g, g == 0 ? out.rounds : out.rounds - 1);
       if (g == 0) {
-        // Every group has stepped rounds + 1 rounds; group 0's messages give the agreed time.
         ++out.rounds;
-        lastRound = now - out.elapsed;
-        out.elapsed = now;
+        const uint64_t read = pool.roundsReadBack(0);
+        if (read > readAt) {
+          // Rounds restored from a checkpoint carry no newer time: they only move the count on.
+          if (agreed > agreedAt) {
+            perRound = (agreed - agreedAt) / double(read - readAt);
+            agreedAt = agreed;
+          }
+          readAt = read;
+        }
+        out.elapsed = std::max(out.elapsed, agreedAt + perRound * double(pool.unread(0)));
         out.stopped = s.stopRequested;
-        // The agreed time is that of the rounds read back; the rounds stepped since took about as
-        // long each (the same on every rank: both are agreed).
-        const double projected = out.elapsed + lastRound * double(pool.unread(0));
-        const bool more = !s.stopRequested && schedule.anotherRound(out.rounds, projected, lastRound);
+        const bool more = !s.stopRequested && schedule.anotherRound(out.rounds, out.elapsed, perRound);
         if (hooks.roundDone) hooks.roundDone(out.rounds, out.elapsed, more);
         if (!more) {
           for (int h = 1; h < groups; ++h) s.finish(h, out.rounds - 1);

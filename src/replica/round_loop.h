@@ -37,7 +37,8 @@ class RoundTransport {
 struct RoundLoopHooks {
   std::function<double()> elapsed;  // this rank's seconds since the loop started
   std::function<bool()> stop;       // this rank was asked to stop (optional): all end after this round
-  // After each round every group has stepped: rounds so far, the ranks' agreed elapsed time, and
+  // After each round every group has stepped: rounds so far, the ranks' agreed elapsed time (the
+  // latest read back, carried forward by the agreed duration of the rounds not read back yet), and
   // whether another round follows (snapshots, progress, checkpoints: group 0 has finished round
   // `rounds` - 1 and the other groups' collectives of that round are pending).
   std::function<void(uint64_t rounds, double elapsed, bool more)> roundDone;
@@ -51,6 +52,9 @@ struct RoundLoopHooks {
 struct RoundLoopStart {
   uint64_t rounds = 0;
   double elapsed = 0.0;
+  // An agreed first guess of a round's duration (0: none). Elapsed times arrive with the messages
+  // read back, lag rounds late; until two have arrived a time budget relies on this guess.
+  double secondsPerRound = 0.0;
 };
 
 struct RoundLoopResult {
