@@ -273,6 +273,30 @@ TEST(ReplicaPool, BalancingUnderALagMovesOnceForOneSpeedDifference) {
   EXPECT_EQ(a.chainMoves(), 10u) << "5 chains per group, moved once";
 }
 
+// A time budget under the normaliser lag: elapsed times come back lag rounds late, so the loop
+// carries the latest forward by the agreed duration of a round (first a guess). A clock that
+// advances 1 s per group round (2 s per round) and a 20 s budget: about 10 rounds, not the 32
+// before the first time comes back; the guess being 25 % low costs a few rounds at most.
+TEST(RoundLoop, ATimeBudgetHoldsWhileTheElapsedTimesAreStillTravelling) {
+  Fixture fx;
+  const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+  ASSERT_GT(fx.settings.normaliserLag, 20);
+  for (double guess : {2.0, 1.5}) {
+    ReplicaPool pool(*fx.eval, fx.settings, 5, lum, 0, 1);
+    const ReplicaSchedule schedule(16.0 * 12.0, 15, 4, 20.0, 64.0);
+    std::vector<Film> films(1, Film(16, 12));
+    LocalTransport transport;
+    double clock = 0.0;
+    RoundLoopHooks hooks;
+    hooks.elapsed = [&] { return clock += 1.0; };
+    RoundLoopStart start;
+    start.secondsPerRound = guess;
+    const RoundLoopResult r = runRoundLoop(pool, schedule, transport, films, hooks, start);
+    EXPECT_GE(r.rounds, 9u) << guess;
+    EXPECT_LE(r.rounds, guess == 2.0 ? 11u : 15u) << guess;
+  }
+}
+
 // The scaling model replays each group round's stepping time: the loop records the first
 // traceLimit of them, in loop order, and nothing without a limit.
 TEST(RoundLoop, RecordsTheSteppingTimeOfTheFirstGroupRounds) {
