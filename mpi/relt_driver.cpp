@@ -3,9 +3,9 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <deque>
 #include <chrono>
 #include <cstdio>
+#include <deque>
 #include <memory>
 
 #include "checkpoint/checkpoint.h"

@@ -159,11 +159,6 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
   // finished its round and every other group's last round was still being gathered; the rounds
   // gathered before are held (spread) or still travelling (local decisions: posted again).
   const bool same = parts.size() == size_t(ranks_);
-  auto share = [&](size_t oldRank, int g, size_t i, int newRank) {
-    LargeStepSums out(m);
-    if (same) return oldRank == size_t(newRank) ? posted[oldRank][size_t(g)][i].large : out;
-    return newRank == 0 ? posted[oldRank][size_t(g)][i].large : out;
-  };
   for (int g = 0; g < groups(); ++g) {
     const std::vector<PostedRound>& rounds = posted[0][size_t(g)];
     ungathered_[size_t(g)] = g > 0 && !rounds.empty() ? 1 : 0;
@@ -172,12 +167,12 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
     for (size_t i = 0; i < rounds.size(); ++i) {
       // Every rank's share (rank order), as its message's tail would have carried it.
       std::vector<LargeStepSums> shares(size_t(ranks_), LargeStepSums{m});
-      for (size_t r = 0; r < parts.size(); ++r)
-        for (int q = 0; q < ranks_; ++q) {
-          const LargeStepSums s = share(r, g, i, q);
-          for (int k = 0; k < m; ++k) shares[size_t(q)].sum[size_t(k)] += s.sum[size_t(k)];
-          shares[size_t(q)].count += s.count;
-        }
+      for (size_t r = 0; r < parts.size(); ++r) {
+        const LargeStepSums& from = posted[r][size_t(g)][i].large;
+        LargeStepSums& into = shares[same ? r : 0];
+        for (int k = 0; k < m; ++k) into.sum[size_t(k)] += from.sum[size_t(k)];
+        into.count += from.count;
+      }
       posted_[size_t(g)].push_back({shares[size_t(rank_)], rounds[i].epoch, placementVersion_[size_t(g)]});
       if (localDecisions() || i + ungathered_[size_t(g)] >= rounds.size()) continue;
       std::vector<std::vector<double>> tails;
