@@ -24,6 +24,7 @@ class SampleSource {
 // does not shift when the camera subpath consumes more numbers.
 class IndependentSource final : public SampleSource {
  public:
+  IndependentSource() : IndependentSource(0) {}
   explicit IndependentSource(uint64_t key) { reset(key); }
   void reset(uint64_t key) {
     for (int i = 0; i < kSampleStreamCount; ++i) rng_[i].seed(key, static_cast<uint64_t>(i));

@@ -38,23 +38,30 @@ Renderer::Renderer(Scene scene, const RenderSettings& settings) : scene_(std::mo
   ps.heuristic = settings_.heuristic;
   ctx_ = std::make_unique<PathContext>(PathContext{scene_, *tracer_, *lights_, *camera_, ps});
   bdpt_ = std::make_unique<Bdpt>(*ctx_);
+  for (size_t i = 0; i < sources_.size(); ++i) sourcePointers_[i] = &sources_[i];
 }
 
 void Renderer::renderRow(uint64_t sampleIndex, int row, Film& film) {
   const int w = settings_.width;
-  IndependentSource source(0);
-  for (int x = 0; x < w; ++x) {
-    const uint64_t pixel = static_cast<uint64_t>(row) * w + x;
-    source.reset(hashKey(settings_.seed, pixel, sampleIndex));
-    const Vec2 jitter = source.next2(SampleStream::Camera);
-    const Vec2 pos(x + jitter.x, row + jitter.y);
-    sample_.clear();
-    if (settings_.integrator == Integrator::PathTracing)
-      tracePath(*ctx_, pos, source, sample_);
-    else
-      bdpt_->trace(pos, source, sample_);
-    film.addSample(sample_);
-    ++samples_;
+  constexpr int K = RayTracer::kPacketSize;
+  for (int x0 = 0; x0 < w; x0 += K) {
+    const int m = std::min(K, w - x0);
+    Vec2 pos[K];
+    for (int i = 0; i < m; ++i) {
+      const uint64_t pixel = static_cast<uint64_t>(row) * w + (x0 + i);
+      sources_[i].reset(hashKey(settings_.seed, pixel, sampleIndex));
+      const Vec2 jitter = sources_[i].next2(SampleStream::Camera);
+      pos[i] = Vec2(x0 + i + jitter.x, row + jitter.y);
+      samples_[i].clear();
+    }
+    if (settings_.integrator == Integrator::PathTracing) {
+      // Neighbouring pixels together: their camera and first shadow rays trace as packets.
+      tracePaths(*ctx_, m, pos, sourcePointers_.data(), samples_.data());
+    } else {
+      for (int i = 0; i < m; ++i) bdpt_->trace(pos[i], sources_[i], samples_[i]);
+    }
+    for (int i = 0; i < m; ++i) film.addSample(samples_[i]);
+    sampleCount_ += static_cast<uint64_t>(m);
   }
 }
 

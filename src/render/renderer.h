@@ -3,11 +3,13 @@
 // and the independent-sample integrators (pt, bdpt) over units of work. The distributed layer
 // decides which rank renders which unit; the image depends only on the seed and which units were
 // rendered, never on who rendered them.
+#include <array>
 #include <memory>
 
 #include "film/film.h"
 #include "image/image.h"
 #include "path/bdpt.h"
+#include "path/path_tracer.h"
 #include "render/settings.h"
 
 namespace relt {
@@ -28,7 +30,7 @@ class Renderer {
   // own random stream keyed by (seed, pixel, sample index).
   void renderRow(uint64_t sampleIndex, int row, Film& film);
 
-  uint64_t samples() const { return samples_; }
+  uint64_t samples() const { return sampleCount_; }
   uint64_t rays() const { return tracer_->rayCount(); }
 
   // Film sums -> pixel values for `spp` samples per pixel.
@@ -42,8 +44,11 @@ class Renderer {
   std::unique_ptr<Camera> camera_;
   std::unique_ptr<PathContext> ctx_;
   std::unique_ptr<Bdpt> bdpt_;
-  PathSample sample_;
-  uint64_t samples_ = 0;
+  // One batch of neighbouring pixels (traced together, see tracePaths).
+  std::array<IndependentSource, RayTracer::kPacketSize> sources_{};
+  std::array<SampleSource*, RayTracer::kPacketSize> sourcePointers_{};
+  std::array<PathSample, RayTracer::kPacketSize> samples_{};
+  uint64_t sampleCount_ = 0;
 };
 
 // Applies the scene's defaults to settings left unset (width/height/max depth 0).

@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -33,6 +34,11 @@ RayTracer::RayTracer(const Scene& scene) : scene_(scene) {
   device_ = rtcNewDevice("threads=1,set_affinity=0");
   if (!device_) throw std::runtime_error("cannot create the Embree device");
   rtcSetDeviceErrorFunction(device_, embreeError, nullptr);
+  // Packets only where the ISA runs them natively (otherwise Embree splits them into single rays).
+  packetWidth_ = rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_NATIVE_RAY16_SUPPORTED)  ? 16
+                 : rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_NATIVE_RAY8_SUPPORTED) ? 8
+                 : rtcGetDeviceProperty(device_, RTC_DEVICE_PROPERTY_NATIVE_RAY4_SUPPORTED) ? 4
+                                                                                            : 1;
 
   const size_t nt = scene.triangles.size();
   ng_.resize(nt);
@@ -116,47 +122,183 @@ bool RayTracer::intersect(const Ray& ray, SurfacePoint& hit, float& distance) co
   return true;
 }
 
-namespace {
-bool occludedRay(RTCScene scene, const Vec3& o, const Vec3& d, float tfar) {
-  if (!traceableRay(o, d) || !(tfar >= 0.0f)) return true;
+struct RayTracer::ShadowRay {
+  Vec3 o, d;  // origin (offset off the surface) and unit direction
+  float tfar;
+};
+
+bool RayTracer::shadowRay(const Segment& seg, ShadowRay& ray, bool& blocked) const {
+  Vec3 o, d;
+  if (seg.toPoint) {
+    o = offsetOrigin(seg.from, seg.fromNg, seg.to - seg.from);
+    d = seg.to - o;
+  } else {
+    const Vec3 d0 = seg.to - seg.from;
+    o = offsetOrigin(seg.from, seg.fromNg, d0);
+    d = offsetOrigin(seg.to, seg.toNg, -d0) - o;
+  }
+  const float len = glm::length(d);
+  blocked = false;
+  if (!(len > 0.0f)) return false;
+  ray = ShadowRay{o, d / len, len * (1.0f - 1e-4f)};
+  // Embree must not see an untraceable ray (see traceableRay): treat it as blocked.
+  blocked = !traceableRay(ray.o, ray.d) || !(ray.tfar >= 0.0f);
+  return !blocked;
+}
+
+bool RayTracer::occluded(const Vec3& from, const Vec3& fromNg, const Vec3& to, const Vec3& toNg) const {
+  return occluded(Segment{from, fromNg, to, toNg, false, true});
+}
+
+bool RayTracer::occludedToPoint(const Vec3& from, const Vec3& fromNg, const Vec3& point) const {
+  return occluded(Segment{from, fromNg, point, Vec3(0.0f), true, true});
+}
+
+bool RayTracer::occluded(const Segment& seg) const {
+  ++rays_;
+  ShadowRay sr;
+  bool blocked;
+  if (!shadowRay(seg, sr, blocked)) return blocked;
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
   RTCRay r;
-  r.org_x = o.x;
-  r.org_y = o.y;
-  r.org_z = o.z;
-  r.dir_x = d.x;
-  r.dir_y = d.y;
-  r.dir_z = d.z;
+  r.org_x = sr.o.x;
+  r.org_y = sr.o.y;
+  r.org_z = sr.o.z;
+  r.dir_x = sr.d.x;
+  r.dir_y = sr.d.y;
+  r.dir_z = sr.d.z;
   r.tnear = 0.0f;
-  r.tfar = tfar;
+  r.tfar = sr.tfar;
   r.time = 0.0f;
   r.mask = 0xffffffffu;
   r.id = 0;
   r.flags = 0;
-  rtcOccluded1(scene, &ctx, &r);
+  rtcOccluded1(rtcScene_, &ctx, &r);
   return r.tfar < 0.0f;
 }
-}  // namespace
 
-bool RayTracer::occluded(const Vec3& from, const Vec3& fromNg, const Vec3& to, const Vec3& toNg) const {
-  ++rays_;
-  const Vec3 d0 = to - from;
-  const Vec3 o = offsetOrigin(from, fromNg, d0);
-  const Vec3 t = offsetOrigin(to, toNg, -d0);
-  const Vec3 d = t - o;
-  const float len = glm::length(d);
-  if (!(len > 0.0f)) return false;
-  return occludedRay(rtcScene_, o, d / len, len * (1.0f - 1e-4f));
+namespace {
+
+// Embree's packet types and calls by width.
+template <int K>
+struct Packet;
+template <>
+struct Packet<4> {
+  using RayHit = RTCRayHit4;
+  using Ray = RTCRay4;
+  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) { rtcIntersect4(v, s, c, r); }
+  static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, Ray* r) { rtcOccluded4(v, s, c, r); }
+};
+template <>
+struct Packet<8> {
+  using RayHit = RTCRayHit8;
+  using Ray = RTCRay8;
+  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) { rtcIntersect8(v, s, c, r); }
+  static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, Ray* r) { rtcOccluded8(v, s, c, r); }
+};
+template <>
+struct Packet<16> {
+  using RayHit = RTCRayHit16;
+  using Ray = RTCRay16;
+  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) { rtcIntersect16(v, s, c, r); }
+  static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, Ray* r) { rtcOccluded16(v, s, c, r); }
+};
+
+template <class RayK>
+void setLane(RayK& r, int i, const Vec3& o, const Vec3& d, float tfar) {
+  r.org_x[i] = o.x;
+  r.org_y[i] = o.y;
+  r.org_z[i] = o.z;
+  r.dir_x[i] = d.x;
+  r.dir_y[i] = d.y;
+  r.dir_z[i] = d.z;
+  r.tnear[i] = 0.0f;
+  r.tfar[i] = tfar;
+  r.time[i] = 0.0f;
+  r.mask[i] = 0xffffffffu;
+  r.id[i] = 0;
+  r.flags[i] = 0;
 }
 
-bool RayTracer::occludedToPoint(const Vec3& from, const Vec3& fromNg, const Vec3& point) const {
-  ++rays_;
-  const Vec3 o = offsetOrigin(from, fromNg, point - from);
-  const Vec3 d = point - o;
-  const float len = glm::length(d);
-  if (!(len > 0.0f)) return false;
-  return occludedRay(rtcScene_, o, d / len, len * (1.0f - 1e-4f));
+}  // namespace
+
+template <int K>
+void RayTracer::intersectPackets(const Ray* rays, int n, SurfacePoint* hits, float* distance, bool* found) const {
+  for (int base = 0; base < n; base += K) {
+    const int m = std::min(K, n - base);
+    alignas(64) int valid[K] = {};
+    alignas(64) typename Packet<K>::RayHit rh;
+    bool any = false;
+    for (int i = 0; i < m; ++i) {
+      const Ray& r = rays[base + i];
+      found[base + i] = false;
+      if (!traceableRay(r.origin, r.dir) || std::isnan(r.tMax)) continue;
+      setLane(rh.ray, i, r.origin, r.dir, r.tMax);
+      rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+      rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+      valid[i] = -1;
+      any = true;
+    }
+    rays_ += static_cast<uint64_t>(m);
+    if (!any) continue;
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    Packet<K>::intersect(valid, rtcScene_, &ctx, &rh);
+    for (int i = 0; i < m; ++i) {
+      if (!valid[i] || rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
+      found[base + i] = true;
+      distance[base + i] = rh.ray.tfar[i];
+      hits[base + i] = surfacePoint(rh.hit.primID[i], rh.hit.u[i], rh.hit.v[i]);
+    }
+  }
+}
+
+template <int K>
+void RayTracer::occludedPackets(const Segment* segs, int n, bool* blocked) const {
+  for (int base = 0; base < n; base += K) {
+    const int m = std::min(K, n - base);
+    alignas(64) int valid[K] = {};
+    alignas(64) typename Packet<K>::Ray r;
+    bool any = false;
+    for (int i = 0; i < m; ++i) {
+      blocked[base + i] = false;
+      if (!segs[base + i].active) continue;
+      ++rays_;
+      ShadowRay sr;
+      if (!shadowRay(segs[base + i], sr, blocked[base + i])) continue;
+      setLane(r, i, sr.o, sr.d, sr.tfar);
+      valid[i] = -1;
+      any = true;
+    }
+    if (!any) continue;
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    Packet<K>::occluded(valid, rtcScene_, &ctx, &r);
+    for (int i = 0; i < m; ++i)
+      if (valid[i]) blocked[base + i] = r.tfar[i] < 0.0f;
+  }
+}
+
+void RayTracer::intersect(const Ray* rays, int n, SurfacePoint* hits, float* distance, bool* found) const {
+  switch (packetWidth_) {
+    case 16: return intersectPackets<16>(rays, n, hits, distance, found);
+    case 8: return intersectPackets<8>(rays, n, hits, distance, found);
+    case 4: return intersectPackets<4>(rays, n, hits, distance, found);
+    default:
+      for (int i = 0; i < n; ++i) found[i] = intersect(rays[i], hits[i], distance[i]);
+  }
+}
+
+void RayTracer::occluded(const Segment* segs, int n, bool* blocked) const {
+  if (n > 1 && packetWidth_ > 1) {
+    switch (packetWidth_) {
+      case 16: return occludedPackets<16>(segs, n, blocked);
+      case 8: return occludedPackets<8>(segs, n, blocked);
+      default: return occludedPackets<4>(segs, n, blocked);
+    }
+  }
+  for (int i = 0; i < n; ++i) blocked[i] = segs[i].active && occluded(segs[i]);
 }
 
 }  // namespace relt

@@ -41,6 +41,22 @@ class RayTracer {
   // Same with a punctual point (no surface at the far end).
   bool occludedToPoint(const Vec3& from, const Vec3& fromNg, const Vec3& point) const;
 
+  // Up to kPacketSize queries traced together as Embree ray packets. Coherent rays (camera rays of
+  // neighbouring pixels and their first shadow rays) cost a fraction of single rays this way; the
+  // results equal the single-ray queries' (same intersection arithmetic).
+  static constexpr int kPacketSize = 16;
+  // Closest hits of rays[0..n); found[i] is false where ray i escapes.
+  void intersect(const Ray* rays, int n, SurfacePoint* hits, float* distance, bool* found) const;
+  // An occlusion query as occluded() / occludedToPoint() take it; inactive segments are skipped.
+  struct Segment {
+    Vec3 from, fromNg, to, toNg;  // toNg unused when toPoint
+    bool toPoint = false;
+    bool active = false;
+  };
+  // blocked[i] as occluded() / occludedToPoint() would answer for segs[i] (false if inactive).
+  void occluded(const Segment* segs, int n, bool* blocked) const;
+  bool occluded(const Segment& seg) const;  // one active segment
+
   // Ray origin nudged off the surface to the side the direction goes to, by an offset proportional
   // to the coordinates' magnitude (float spacing grows with |p|). Inline: several per path vertex.
   Vec3 offsetOrigin(const Vec3& p, const Vec3& ng, const Vec3& dir) const {
@@ -70,6 +86,14 @@ class RayTracer {
   uint64_t rayCount() const { return rays_; }
 
  private:
+  struct ShadowRay;
+  // The ray an occlusion query traces; false with `blocked` set when none is needed.
+  bool shadowRay(const Segment& seg, ShadowRay& ray, bool& blocked) const;
+  template <int K>
+  void intersectPackets(const Ray* rays, int n, SurfacePoint* hits, float* distance, bool* found) const;
+  template <int K>
+  void occludedPackets(const Segment* segs, int n, bool* blocked) const;
+
   // Unit shading normal interpolated from the vertex normals (the geometric one if degenerate).
   Vec3 interpolatedNormal(const Triangle& tri, float b0, float b1, float b2, const Vec3& ng) const;
 
@@ -79,6 +103,7 @@ class RayTracer {
   std::vector<Vec3> ng_;
   std::vector<float> area_;
   std::vector<Vec3> flatNs_;  // unit shading normal of triangles whose vertex normals agree, else 0
+  int packetWidth_ = 1;  // widest ray packet the Embree build runs natively (16, 8, 4; 1: none)
   float epsilonFloor_ = 1.0f;  // offsets never shrink below this scale: max(1, 1 % of the scene's extent)
   mutable uint64_t rays_ = 0;
 };
