@@ -1,6 +1,7 @@
 #include "replica/load_balance.h"
 
 #include <algorithm>
+#include <cmath>
 #include <queue>
 
 namespace relt {
@@ -40,6 +41,20 @@ std::vector<int> balancedCounts(const std::vector<int>& chains, const std::vecto
   for (size_t r = 0; r < ranks; ++r)
     if (speed[r] > 0.0) predicted = std::max(predicted, counts[r] / speed[r]);
   return predicted < (1.0 - minGain) * slowest ? counts : chains;
+}
+
+double noiseGain(const std::vector<double>& seconds, const std::vector<double>& squares, double rounds, double floor,
+                 double ceiling) {
+  if (rounds < 2.0 || seconds.size() < 2) return floor;
+  double relativeError = 0.0;
+  for (size_t r = 0; r < seconds.size(); ++r) {
+    if (!(seconds[r] > 0.0)) continue;
+    const double mean = seconds[r] / rounds;
+    const double variance = std::max(0.0, squares[r] / rounds - mean * mean);
+    relativeError = std::max(relativeError, std::sqrt(variance * rounds) / seconds[r]);
+  }
+  const double z = std::sqrt(2.0 * std::log(double(seconds.size()))) + 1.0;
+  return std::clamp(z * relativeError, floor, std::max(floor, ceiling));
 }
 
 std::vector<ChainMove> planMoves(const std::vector<std::vector<int>>& hosted, const std::vector<int>& counts) {

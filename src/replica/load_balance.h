@@ -16,6 +16,17 @@ namespace relt {
 // time falls by more than `minGain` (a fraction), so noise does not move chains back and forth.
 std::vector<int> balancedCounts(const std::vector<int>& chains, const std::vector<double>& seconds, double minGain);
 
+// The smallest predicted gain worth moving chains for, from what a balance window measured: every
+// rank's stepping seconds summed over `rounds` rounds, and their squares. A rank's window time
+// carries a relative standard error cv / sqrt(rounds) (cv: the variation of its round times, from
+// paths of different lengths); the slowest of P ranks looks slow by about sqrt(2 ln P) of those
+// from noise alone. A gain below that plus one more standard error is not told apart from noise,
+// and every move makes the two ranks meet, so it costs. Never below `floor`, never above `ceiling`:
+// a rank that shares its core loses whole time slices, its round times are heavy-tailed, and the
+// error for independent rounds then overstates the noise of a window that holds many slices.
+double noiseGain(const std::vector<double>& seconds, const std::vector<double>& squares, double rounds, double floor,
+                 double ceiling);
+
 struct ChainMove {
   int chain, from, to;
   bool operator==(const ChainMove&) const = default;

@@ -65,6 +65,8 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   placementVersion_.assign(size_t(groups()), 0);
   readBackCount_.assign(size_t(groups()), 0);
   windowSeconds_.assign(size_t(groups()), std::vector<double>(size_t(ranks), 0.0));
+  windowSquares_ = windowSeconds_;
+  windowRounds_.assign(size_t(groups()), 0.0);
   balanceDecisions_.assign(size_t(groups()), 0);
   epochOf_.assign(size_t(chainCount()), 0);
   std::vector<double> b(static_cast<size_t>(m));
@@ -226,16 +228,19 @@ RoundAgreement ReplicaPool::finishRound(int group, const std::vector<std::vector
   }
 
   // The group's placement from the speeds measured since its last decision, once the slowest rank
-  // has stepped it for a window long enough that timing noise is small (and a gain under 1 % is
-  // still noise). The first windows are 1/8, 1/4 and 1/2 of it: an uneven start costs less.
+  // has stepped it for a window long enough that timing noise is small; a gain that the window's
+  // own noise could explain (noiseGain, 1 % to 10 %) moves nothing. The first windows are 1/8, 1/4
+  // and 1/2 of it: an uneven start costs less.
   std::vector<double>& window = windowSeconds_[size_t(group)];
   const double slowest = *std::max_element(window.begin(), window.end());
   uint64_t& decisions = balanceDecisions_[size_t(group)];
   const double needed = settings_.balanceWindow / double(1 << std::max(0, 3 - int(decisions)));
   if (settings_.balanceWindow > 0.0 && ranks_ > 1 && slowest * groups() >= needed) {
     ++decisions;
-    moves_ = balanceMoves(group, window);
+    moves_ = balanceMoves(group, window, noiseGain(window, windowSquares_[size_t(group)], windowRounds_[size_t(group)], 0.01, 0.1));
     window.assign(window.size(), 0.0);
+    windowSquares_[size_t(group)].assign(window.size(), 0.0);
+    windowRounds_[size_t(group)] = 0.0;
   }
   return agreed;
 }
@@ -250,12 +255,17 @@ void ReplicaPool::readBack(int group, const std::vector<std::vector<double>>& ta
   if (current) epochRead_[size_t(group)] = 1;
   const bool samePlacement = mine.placement == placementVersion_[size_t(group)];
   std::vector<double>& window = windowSeconds_[size_t(group)];
+  std::vector<double>& squares = windowSquares_[size_t(group)];
+  if (samePlacement) windowRounds_[size_t(group)] += 1.0;
   for (size_t r = 0; r < tails.size(); ++r) {
     const std::vector<double>& t = tails[r];
     const size_t n = t.size();
     agreed.elapsed = std::max(agreed.elapsed, t[n - 1]);
     agreed.stop |= t[n - 2] > 0.0;
-    if (samePlacement) window[r] += t[n - 3];
+    if (samePlacement) {
+      window[r] += t[n - 3];
+      squares[r] += t[n - 3] * t[n - 3];
+    }
     if (!active_ || !current) continue;
     for (int k = 0; k < m; ++k) largeSum_[size_t(k)] += t[size_t(k)];
     largeCount_ += t[size_t(m)];
@@ -307,7 +317,7 @@ void ReplicaPool::exchange(int group, const std::vector<std::vector<double>>& me
   for (size_t i = 0; i < chains_.size(); ++i) chains_[i].setLevel(levelOf_[size_t(hosted()[i])]);
 }
 
-std::vector<ChainMove> ReplicaPool::balanceMoves(int group, const std::vector<double>& seconds) const {
+std::vector<ChainMove> ReplicaPool::balanceMoves(int group, const std::vector<double>& seconds, double minGain) const {
   // The units that move: chains, or whole ladders (named by their first chain) with local decisions.
   const int m = levels();
   const int unit = localDecisions() ? m : 1;
@@ -319,7 +329,7 @@ std::vector<ChainMove> ReplicaPool::balanceMoves(int group, const std::vector<do
     counts[size_t(r)] = int(units[size_t(r)].size());
   }
   std::vector<ChainMove> moves;
-  for (const ChainMove& u : planMoves(units, balancedCounts(counts, seconds, 0.01)))
+  for (const ChainMove& u : planMoves(units, balancedCounts(counts, seconds, minGain)))
     for (int k = 0; k < unit; ++k) moves.push_back({u.chain + k, u.from, u.to});
   return moves;
 }

@@ -124,7 +124,7 @@ class ReplicaPool {
  private:
   const std::vector<int>& hosted() const { return hostedByRank_[size_t(rank_)]; }
   void reindex();  // localIndex_ from hosted()
-  std::vector<ChainMove> balanceMoves(int group, const std::vector<double>& seconds) const;
+  std::vector<ChainMove> balanceMoves(int group, const std::vector<double>& seconds, double minGain) const;
   void exchange(int group, const std::vector<std::vector<double>>& messages, uint64_t round);
   // Reads back every rank's message tail (large-step sums and count, seconds, stop, elapsed) of the
   // group's oldest round not read back yet.
@@ -151,6 +151,8 @@ class ReplicaPool {
   std::vector<int> localIndex_;         // every chain's index in chains_, -1 if hosted elsewhere
   std::vector<ReplicaChain> chains_;    // this rank's, in hosted() order
   std::vector<std::vector<double>> windowSeconds_;  // per group, every rank's stepping time since its last placement decision
+  std::vector<std::vector<double>> windowSquares_;  // ... and the sum of its squares per round
+  std::vector<double> windowRounds_;                // ... over this many rounds
   std::vector<ChainMove> moves_;        // planned, not yet committed
   std::vector<std::pair<int, ReplicaChain>> imported_;
   std::vector<LevelCounters> departed_;  // counters of chains this rank gave away
