@@ -120,7 +120,7 @@ void continuePath(const PathContext& ctx, PathState& st, SampleSource& source) {
     float dist;
     if (!ctx.tracer.intersect(st.ray, hit, dist)) return;
     RayTracer::Segment shadow;
-    Color direct;
+    Color direct(0.0f);
     const bool more = scatter(ctx, st, hit, dist, source, DirectLight{shadow, direct});
     addDirect(st, shadow, direct, shadow.active && ctx.tracer.occluded(shadow));
     if (!more) return;
@@ -154,7 +154,7 @@ void tracePaths(const PathContext& ctx, int n, const Vec2* film, SampleSource* c
     bool found[K];
     ctx.tracer.intersect(rays, m, hits, dist, found);
     RayTracer::Segment shadows[K];
-    Color direct[K];
+    Color direct[K] = {};
     bool more[K] = {};
     for (int i = 0; i < m; ++i)
       if (found[i]) more[i] = scatter(ctx, st[i], hits[i], dist[i], *sources[base + i], DirectLight{shadows[i], direct[i]});

@@ -43,17 +43,19 @@ std::vector<int> balancedCounts(const std::vector<int>& chains, const std::vecto
   return predicted < (1.0 - minGain) * slowest ? counts : chains;
 }
 
-double noiseGain(const std::vector<double>& seconds, const std::vector<double>& squares, double rounds, double floor,
-                 double ceiling) {
-  if (rounds < 2.0 || seconds.size() < 2) return floor;
+double noiseGain(const std::vector<int>& chains, const std::vector<double>& seconds, const std::vector<double>& squares,
+                 double rounds, double floor, double ceiling) {
   double relativeError = 0.0;
+  int measured = 0;
   for (size_t r = 0; r < seconds.size(); ++r) {
-    if (!(seconds[r] > 0.0)) continue;
+    if (chains[r] <= 0 || !(seconds[r] > 0.0)) continue;
+    ++measured;
     const double mean = seconds[r] / rounds;
     const double variance = std::max(0.0, squares[r] / rounds - mean * mean);
     relativeError = std::max(relativeError, std::sqrt(variance * rounds) / seconds[r]);
   }
-  const double z = std::sqrt(2.0 * std::log(double(seconds.size()))) + 1.0;
+  if (rounds < 2.0 || measured < 2) return floor;
+  const double z = std::sqrt(2.0 * std::log(double(measured))) + 1.0;
   return std::clamp(z * relativeError, floor, std::max(floor, ceiling));
 }
 

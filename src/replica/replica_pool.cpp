@@ -237,7 +237,7 @@ RoundAgreement ReplicaPool::finishRound(int group, const std::vector<std::vector
   const double needed = settings_.balanceWindow / double(1 << std::max(0, 3 - int(decisions)));
   if (settings_.balanceWindow > 0.0 && ranks_ > 1 && slowest * groups() >= needed) {
     ++decisions;
-    moves_ = balanceMoves(group, window, noiseGain(window, windowSquares_[size_t(group)], windowRounds_[size_t(group)], 0.01, 0.1));
+    moves_ = balanceMoves(group, window, windowSquares_[size_t(group)], windowRounds_[size_t(group)]);
     window.assign(window.size(), 0.0);
     windowSquares_[size_t(group)].assign(window.size(), 0.0);
     windowRounds_[size_t(group)] = 0.0;
@@ -256,7 +256,10 @@ void ReplicaPool::readBack(int group, const std::vector<std::vector<double>>& ta
   const bool samePlacement = mine.placement == placementVersion_[size_t(group)];
   std::vector<double>& window = windowSeconds_[size_t(group)];
   std::vector<double>& squares = windowSquares_[size_t(group)];
-  if (samePlacement) windowRounds_[size_t(group)] += 1.0;
+  // Rounds restored from a checkpoint carry no stepping times: they are not timing data.
+  bool timed = false;
+  for (const std::vector<double>& t : tails) timed |= t[t.size() - 3] > 0.0;
+  if (samePlacement && timed) windowRounds_[size_t(group)] += 1.0;
   for (size_t r = 0; r < tails.size(); ++r) {
     const std::vector<double>& t = tails[r];
     const size_t n = t.size();
@@ -317,7 +320,8 @@ void ReplicaPool::exchange(int group, const std::vector<std::vector<double>>& me
   for (size_t i = 0; i < chains_.size(); ++i) chains_[i].setLevel(levelOf_[size_t(hosted()[i])]);
 }
 
-std::vector<ChainMove> ReplicaPool::balanceMoves(int group, const std::vector<double>& seconds, double minGain) const {
+std::vector<ChainMove> ReplicaPool::balanceMoves(int group, const std::vector<double>& seconds,
+                                                 const std::vector<double>& squares, double rounds) const {
   // The units that move: chains, or whole ladders (named by their first chain) with local decisions.
   const int m = levels();
   const int unit = localDecisions() ? m : 1;
@@ -328,6 +332,7 @@ std::vector<ChainMove> ReplicaPool::balanceMoves(int group, const std::vector<do
       if (groupOf(c) == group && c % unit == 0) units[size_t(r)].push_back(c);
     counts[size_t(r)] = int(units[size_t(r)].size());
   }
+  const double minGain = noiseGain(counts, seconds, squares, rounds, 0.01, 0.1);
   std::vector<ChainMove> moves;
   for (const ChainMove& u : planMoves(units, balancedCounts(counts, seconds, minGain)))
     for (int k = 0; k < unit; ++k) moves.push_back({u.chain + k, u.from, u.to});

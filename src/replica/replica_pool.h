@@ -124,7 +124,8 @@ class ReplicaPool {
  private:
   const std::vector<int>& hosted() const { return hostedByRank_[size_t(rank_)]; }
   void reindex();  // localIndex_ from hosted()
-  std::vector<ChainMove> balanceMoves(int group, const std::vector<double>& seconds, double minGain) const;
+  std::vector<ChainMove> balanceMoves(int group, const std::vector<double>& seconds, const std::vector<double>& squares,
+                                      double rounds) const;
   void exchange(int group, const std::vector<std::vector<double>>& messages, uint64_t round);
   // Reads back every rank's message tail (large-step sums and count, seconds, stop, elapsed) of the
   // group's oldest round not read back yet.

@@ -83,24 +83,29 @@ TEST(LoadBalance, MovesTurnThePlacementIntoTheCounts) {
 // (the slowest of many ranks looks slow by noise alone).
 TEST(LoadBalance, TheMoveThresholdFollowsTheMeasuredNoise) {
   // Two ranks, 100 rounds of exactly 2 ms: no noise, the floor.
-  EXPECT_DOUBLE_EQ(noiseGain({0.2, 0.2}, {100 * 4e-6, 100 * 4e-6}, 100.0, 0.01, 0.1), 0.01);
+  EXPECT_DOUBLE_EQ(noiseGain({8, 8}, {0.2, 0.2}, {100 * 4e-6, 100 * 4e-6}, 100.0, 0.01, 0.1), 0.01);
   // Round times 2 ms with a 20 % standard deviation on one rank: relative error 0.2 / sqrt(n).
   auto squares = [](double mean, double sd, double n) { return n * (mean * mean + sd * sd); };
   const double z2 = std::sqrt(2.0 * std::log(2.0)) + 1.0;
-  EXPECT_NEAR(noiseGain({0.2, 0.2}, {squares(2e-3, 4e-4, 100), squares(2e-3, 0.0, 100)}, 100.0, 0.01, 0.1), z2 * 0.02, 1e-9);
-  EXPECT_NEAR(noiseGain({1.6, 1.6}, {squares(2e-3, 4e-4, 800), squares(2e-3, 0.0, 800)}, 800.0, 0.0, 0.1),
+  EXPECT_NEAR(noiseGain({8, 8}, {0.2, 0.2}, {squares(2e-3, 4e-4, 100), squares(2e-3, 0.0, 100)}, 100.0, 0.01, 0.1), z2 * 0.02, 1e-9);
+  EXPECT_NEAR(noiseGain({8, 8}, {1.6, 1.6}, {squares(2e-3, 4e-4, 800), squares(2e-3, 0.0, 800)}, 800.0, 0.0, 0.1),
               z2 * 0.2 / std::sqrt(800.0), 1e-9);
   // The same noise on 1,024 ranks: the slowest looks slower by chance, the threshold is higher.
   std::vector<double> seconds(1024, 0.2), sq(1024, squares(2e-3, 4e-4, 100));
-  EXPECT_NEAR(noiseGain(seconds, sq, 100.0, 0.01, 0.1), (std::sqrt(2.0 * std::log(1024.0)) + 1.0) * 0.02, 1e-9);
+  EXPECT_NEAR(noiseGain(std::vector<int>(1024, 8), seconds, sq, 100.0, 0.01, 0.1), (std::sqrt(2.0 * std::log(1024.0)) + 1.0) * 0.02, 1e-9);
   // Heavy tails (a rank losing time slices: 13 rounds of 0.3 ms, then one of 8.3 ms): at most the
   // ceiling, so a rank at a third of its speed still gets help.
   std::vector<double> slices;
   for (int i = 0; i < 56; ++i) slices.push_back(i % 14 == 13 ? 8.3e-3 : 0.3e-3);
   double sum = 0.0, sumSq = 0.0;
   for (double t : slices) sum += t, sumSq += t * t;
-  EXPECT_DOUBLE_EQ(noiseGain({sum / 3.0, sum}, {sumSq / 9.0, sumSq}, 56.0, 0.01, 0.1), 0.1);
+  EXPECT_DOUBLE_EQ(noiseGain({8, 8}, {sum / 3.0, sum}, {sumSq / 9.0, sumSq}, 56.0, 0.01, 0.1), 0.1);
   // Too few rounds or one rank: the floor.
-  EXPECT_DOUBLE_EQ(noiseGain({0.002, 0.004}, {4e-6, 1.6e-5}, 1.0, 0.01, 0.1), 0.01);
-  EXPECT_DOUBLE_EQ(noiseGain({0.2}, {squares(2e-3, 4e-4, 100)}, 100.0, 0.01, 0.1), 0.01);
+  EXPECT_DOUBLE_EQ(noiseGain({8, 8}, {0.002, 0.004}, {4e-6, 1.6e-5}, 1.0, 0.01, 0.1), 0.01);
+  EXPECT_DOUBLE_EQ(noiseGain({8}, {0.2}, {squares(2e-3, 4e-4, 100)}, 100.0, 0.01, 0.1), 0.01);
+  // A rank without chains steps nothing: its tiny, jittery times count neither for the noise nor
+  // for the rank count (1 us rounds with one 50 us hiccup would set the threshold to the ceiling).
+  const double idle = 16e-6 + 49e-6, idleSq = 15 * 1e-12 + 50e-6 * 50e-6;
+  EXPECT_DOUBLE_EQ(noiseGain({32, 32, 0}, {0.032, 0.0352, idle}, {16 * 4e-6, 16 * 4.84e-6, idleSq}, 16.0, 0.01, 0.1), 0.01);
+  EXPECT_DOUBLE_EQ(noiseGain({32, 32, 1}, {0.032, 0.0352, idle}, {16 * 4e-6, 16 * 4.84e-6, idleSq}, 16.0, 0.01, 0.1), 0.1);
 }
