@@ -54,7 +54,8 @@ double noiseGain(const std::vector<int>& chains, const std::vector<double>& seco
     const double variance = std::max(0.0, squares[r] / rounds - mean * mean);
     relativeError = std::max(relativeError, std::sqrt(variance * rounds) / seconds[r]);
   }
-  if (rounds < 2.0 || measured < 2) return floor;
+  if (measured < 2) return floor;
+  if (rounds < 4.0) return std::max(floor, ceiling);  // too few rounds to measure a spread
   const double z = std::sqrt(2.0 * std::log(double(measured))) + 1.0;
   return std::clamp(z * relativeError, floor, std::max(floor, ceiling));
 }

@@ -24,6 +24,8 @@ std::vector<int> balancedCounts(const std::vector<int>& chains, const std::vecto
 // and every move makes the two ranks meet, so it costs. Never below `floor`, never above `ceiling`:
 // a rank that shares its core loses whole time slices, its round times are heavy-tailed, and the
 // error for independent rounds then overstates the noise of a window that holds many slices.
+// Fewer than 4 rounds (a rank with many chains can take a whole first window for one round): the
+// spread is unknown, the ceiling.
 // Only ranks holding chains count (an idle rank's tiny stepping times are all jitter).
 double noiseGain(const std::vector<int>& chains, const std::vector<double>& seconds, const std::vector<double>& squares,
                  double rounds, double floor, double ceiling);

@@ -100,8 +100,9 @@ TEST(LoadBalance, TheMoveThresholdFollowsTheMeasuredNoise) {
   double sum = 0.0, sumSq = 0.0;
   for (double t : slices) sum += t, sumSq += t * t;
   EXPECT_DOUBLE_EQ(noiseGain({8, 8}, {sum / 3.0, sum}, {sumSq / 9.0, sumSq}, 56.0, 0.01, 0.1), 0.1);
-  // Too few rounds or one rank: the floor.
-  EXPECT_DOUBLE_EQ(noiseGain({8, 8}, {0.002, 0.004}, {4e-6, 1.6e-5}, 1.0, 0.01, 0.1), 0.01);
+  // Fewer than 4 rounds: no spread measured yet, the ceiling; one rank: the floor.
+  EXPECT_DOUBLE_EQ(noiseGain({8, 8}, {0.002, 0.004}, {4e-6, 1.6e-5}, 1.0, 0.01, 0.1), 0.1);
+  EXPECT_DOUBLE_EQ(noiseGain({8, 8}, {0.006, 0.012}, {1.2e-5, 4.8e-5}, 3.0, 0.01, 0.1), 0.1);
   EXPECT_DOUBLE_EQ(noiseGain({8}, {0.2}, {squares(2e-3, 4e-4, 100)}, 100.0, 0.01, 0.1), 0.01);
   // A rank without chains steps nothing: its tiny, jittery times count neither for the noise nor
   // for the rank count (1 us rounds with one 50 us hiccup would set the threshold to the ceiling).
