@@ -68,6 +68,7 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   windowSquares_ = windowSeconds_;
   windowRounds_.assign(size_t(groups()), 0.0);
   balanceDecisions_.assign(size_t(groups()), 0);
+  windowSpan_.assign(size_t(groups()), 1.0);
   epochOf_.assign(size_t(chainCount()), 0);
   std::vector<double> b(static_cast<size_t>(m));
   for (int k = 0; k < m; ++k) b[size_t(k)] = samples ? bootstrapSum_[size_t(k)] / double(samples) : 0.0;
@@ -230,17 +231,25 @@ RoundAgreement ReplicaPool::finishRound(int group, const std::vector<std::vector
   // The group's placement from the speeds measured since its last decision, once the slowest rank
   // has stepped it for a window long enough that timing noise is small; a gain that the window's
   // own noise could explain (noiseGain, 1 % to 10 %) moves nothing. The first windows are 1/8, 1/4
-  // and 1/2 of it: an uneven start costs less.
+  // and 1/2 of it: an uneven start costs less. A decision that moves nothing keeps measuring, its
+  // window doubled, up to 8 windows: the noise falls as 1 / sqrt(rounds), so an imbalance too small
+  // for one window is still found.
   std::vector<double>& window = windowSeconds_[size_t(group)];
   const double slowest = *std::max_element(window.begin(), window.end());
   uint64_t& decisions = balanceDecisions_[size_t(group)];
-  const double needed = settings_.balanceWindow / double(1 << std::max(0, 3 - int(decisions)));
+  double& span = windowSpan_[size_t(group)];
+  const double needed = span * settings_.balanceWindow / double(1 << std::max(0, 3 - int(decisions)));
   if (settings_.balanceWindow > 0.0 && ranks_ > 1 && slowest * groups() >= needed) {
     ++decisions;
     moves_ = balanceMoves(group, window, windowSquares_[size_t(group)], windowRounds_[size_t(group)]);
-    window.assign(window.size(), 0.0);
-    windowSquares_[size_t(group)].assign(window.size(), 0.0);
-    windowRounds_[size_t(group)] = 0.0;
+    if (moves_.empty() && span < 8.0) {
+      span *= 2.0;
+    } else {
+      span = 1.0;
+      window.assign(window.size(), 0.0);
+      windowSquares_[size_t(group)].assign(window.size(), 0.0);
+      windowRounds_[size_t(group)] = 0.0;
+    }
   }
   return agreed;
 }

@@ -159,6 +159,7 @@ class ReplicaPool {
   std::vector<LevelCounters> departed_;  // counters of chains this rank gave away
   uint64_t chainMoves_ = 0;
   std::vector<uint64_t> balanceDecisions_;  // per group
+  std::vector<double> windowSpan_;          // per group: windows the current measurement may last (1 to 8)
   uint64_t epoch_ = 0;                  // regularisation moves so far
   std::vector<uint64_t> epochOf_;       // every chain's: the epoch its state was last evaluated in
   std::vector<int> levelOf_;            // every chain's level (kept identical on every rank)

@@ -273,6 +273,53 @@ TEST(ReplicaPool, BalancingUnderALagMovesOnceForOneSpeedDifference) {
   EXPECT_EQ(a.chainMoves(), 10u) << "5 chains per group, moved once";
 }
 
+// A persistent imbalance smaller than one window's timing noise: rank 1 is 12 % slower (moving 2 of
+// 40 chains per group gains 5 %), and round times alternate 15 % above and below their mean (cv
+// 0.15, with no luck in it: a window's sum is the mean). One window of ~8 rounds puts the noise
+// threshold at the 10 % ceiling, 16 rounds at 8.2 %, 32 at 5.8 %: each alone moves nothing. A
+// decision that moves nothing keeps measuring; at 64 rounds (4.1 %) the chains move, once.
+TEST(ReplicaPool, AnImbalanceHiddenInOneWindowsNoiseIsFoundByMeasuringLonger) {
+  Fixture fx;
+  fx.settings.family.levels = 4;
+  fx.settings.ladders = 40;  // 160 chains, 80 per group, 40 per rank and group at the start
+  fx.settings.placement = Placement::Spread;
+  // Rank 1 steps a group round in 40 x 11.2 ms = 0.448 s, so a window of this many seconds (it
+  // counts group rounds x groups) holds about 8 rounds.
+  fx.settings.balanceWindow = 8.0 * 0.448 * 2.0;
+  const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+  ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
+  std::vector<Film> fa(1, Film(16, 12)), fb(1, Film(16, 12));
+  Collectives c(a.groups());
+  auto hostedInGroup = [&](int rank, int g) {
+    int n = 0;
+    for (int ch = 0; ch < a.chainCount(); ++ch) n += a.groupOf(ch) == g && (rank == 0 ? a.hosts(ch) : b.hosts(ch));
+    return n;
+  };
+  for (int g = 0; g < a.groups(); ++g) ASSERT_EQ(hostedInGroup(0, g), 40);
+  uint64_t firstMove = 0;
+  const uint64_t lag = uint64_t(fx.settings.normaliserLag);
+  for (uint64_t r = 0; r < lag + 200; ++r)
+    for (int g = 0; g < a.groups(); ++g) {
+      a.runRound(g, 1, fa);
+      b.runRound(g, 1, fb);
+      const double wobble = r % 2 == 0 ? 1.15 : 0.85;
+      const double s0 = 0.01 * hostedInGroup(0, g) * wobble, s1 = 0.0112 * hostedInGroup(1, g) * wobble;
+      c.post(g, {a.roundMessage(g, 0.0, s0), b.roundMessage(g, 0.0, s1)});
+      c.finish({&a, &b}, g, r);
+      ASSERT_EQ(a.plannedMoves(), b.plannedMoves());
+      if (!a.plannedMoves().empty() && firstMove == 0) firstMove = r;
+      for (const ChainMove& m : a.plannedMoves())
+        (m.to == 0 ? a : b).importChain(m.chain, (m.to == 0 ? b : a).exportChain(m.chain));
+      a.commitMoves();
+      b.commitMoves();
+    }
+  // Not before about 60 rounds had been read back; then 42 chains per group on the faster rank
+  // (42.3 would balance), moved once per group, and never back.
+  EXPECT_GT(firstMove, lag + 50) << "moved on a window's noise";
+  for (int g = 0; g < a.groups(); ++g) EXPECT_EQ(hostedInGroup(0, g), 42) << "group " << g;
+  EXPECT_EQ(a.chainMoves(), 4u);
+}
+
 // A time budget under the normaliser lag: elapsed times come back lag rounds late, so the loop
 // carries the latest forward by the agreed duration of a round (first a guess). A clock that
 // advances 1 s per group round (2 s per round) and a 20 s budget: about 10 rounds, not the 32
