@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace relt {
 namespace {
@@ -25,6 +26,22 @@ bool traceableRay(const Vec3& o, const Vec3& d) {
     return std::abs(v.x) <= kLarge && std::abs(v.y) <= kLarge && std::abs(v.z) <= kLarge;
   };
   return within(o) && within(d);
+}
+
+// A single ray from o along the unit direction d up to tfar, every field set.
+void setRay(RTCRay& r, const Vec3& o, const Vec3& d, float tfar) {
+  r.org_x = o.x;
+  r.org_y = o.y;
+  r.org_z = o.z;
+  r.dir_x = d.x;
+  r.dir_y = d.y;
+  r.dir_z = d.z;
+  r.tnear = 0.0f;
+  r.tfar = tfar;
+  r.time = 0.0f;
+  r.mask = 0xffffffffu;
+  r.id = 0;
+  r.flags = 0;
 }
 
 }  // namespace
@@ -101,18 +118,7 @@ bool RayTracer::intersect(const Ray& ray, SurfacePoint& hit, float& distance) co
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
   RTCRayHit rh;
-  rh.ray.org_x = ray.origin.x;
-  rh.ray.org_y = ray.origin.y;
-  rh.ray.org_z = ray.origin.z;
-  rh.ray.dir_x = ray.dir.x;
-  rh.ray.dir_y = ray.dir.y;
-  rh.ray.dir_z = ray.dir.z;
-  rh.ray.tnear = 0.0f;
-  rh.ray.tfar = ray.tMax;
-  rh.ray.time = 0.0f;
-  rh.ray.mask = 0xffffffffu;
-  rh.ray.id = 0;
-  rh.ray.flags = 0;
+  setRay(rh.ray, ray.origin, ray.dir, ray.tMax);
   rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
   rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(rtcScene_, &ctx, &rh);
@@ -162,47 +168,28 @@ bool RayTracer::occluded(const Segment& seg) const {
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
   RTCRay r;
-  r.org_x = sr.o.x;
-  r.org_y = sr.o.y;
-  r.org_z = sr.o.z;
-  r.dir_x = sr.d.x;
-  r.dir_y = sr.d.y;
-  r.dir_z = sr.d.z;
-  r.tnear = 0.0f;
-  r.tfar = sr.tfar;
-  r.time = 0.0f;
-  r.mask = 0xffffffffu;
-  r.id = 0;
-  r.flags = 0;
+  setRay(r, sr.o, sr.d, sr.tfar);
   rtcOccluded1(rtcScene_, &ctx, &r);
   return r.tfar < 0.0f;
 }
 
 namespace {
 
-// Embree's packet types and calls by width.
+// Embree's packet types and calls by width (4, 8 or 16).
 template <int K>
-struct Packet;
-template <>
-struct Packet<4> {
-  using RayHit = RTCRayHit4;
-  using Ray = RTCRay4;
-  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) { rtcIntersect4(v, s, c, r); }
-  static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, Ray* r) { rtcOccluded4(v, s, c, r); }
-};
-template <>
-struct Packet<8> {
-  using RayHit = RTCRayHit8;
-  using Ray = RTCRay8;
-  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) { rtcIntersect8(v, s, c, r); }
-  static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, Ray* r) { rtcOccluded8(v, s, c, r); }
-};
-template <>
-struct Packet<16> {
-  using RayHit = RTCRayHit16;
-  using Ray = RTCRay16;
-  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) { rtcIntersect16(v, s, c, r); }
-  static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, Ray* r) { rtcOccluded16(v, s, c, r); }
+struct Packet {
+  using RayHit = std::conditional_t<K == 4, RTCRayHit4, std::conditional_t<K == 8, RTCRayHit8, RTCRayHit16>>;
+  using Ray = std::conditional_t<K == 4, RTCRay4, std::conditional_t<K == 8, RTCRay8, RTCRay16>>;
+  static void intersect(const int* v, RTCScene s, RTCIntersectContext* c, RayHit* r) {
+    if constexpr (K == 4) rtcIntersect4(v, s, c, r);
+    else if constexpr (K == 8) rtcIntersect8(v, s, c, r);
+    else rtcIntersect16(v, s, c, r);
+  }
+  static void occluded(const int* v, RTCScene s, RTCIntersectContext* c, Ray* r) {
+    if constexpr (K == 4) rtcOccluded4(v, s, c, r);
+    else if constexpr (K == 8) rtcOccluded8(v, s, c, r);
+    else rtcOccluded16(v, s, c, r);
+  }
 };
 
 template <class RayK>

@@ -238,6 +238,35 @@ TEST(RoundLoop, AStopRequestEndsTheLoopAfterTheCurrentRound) {
   }
 }
 
+// Two pools playing ranks 0 and 1 of one render, stepped one group round at a time with stepping
+// times the test chooses; planned moves are carried out between them as the MPI layer would.
+struct TwoRanks {
+  TwoRanks(Fixture& fx, const std::vector<double>& lum)
+      : a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2), c(a.groups()) {}
+  int hostedInGroup(int rank, int g) const {
+    int n = 0;
+    for (int ch = 0; ch < a.chainCount(); ++ch) n += a.groupOf(ch) == g && (rank == 0 ? a.hosts(ch) : b.hosts(ch));
+    return n;
+  }
+  // Group g's round r with the two ranks' stepping seconds; true if chains moved.
+  bool round(uint64_t r, int g, double seconds0, double seconds1) {
+    a.runRound(g, 1, fa);
+    b.runRound(g, 1, fb);
+    c.post(g, {a.roundMessage(g, 0.0, seconds0), b.roundMessage(g, 0.0, seconds1)});
+    c.finish({&a, &b}, g, r);
+    EXPECT_EQ(a.plannedMoves(), b.plannedMoves());
+    const bool moved = !a.plannedMoves().empty();
+    for (const ChainMove& m : a.plannedMoves())
+      (m.to == 0 ? a : b).importChain(m.chain, (m.to == 0 ? b : a).exportChain(m.chain));
+    a.commitMoves();
+    b.commitMoves();
+    return moved;
+  }
+  ReplicaPool a, b;
+  std::vector<Film> fa{1, Film(16, 12)}, fb{1, Film(16, 12)};
+  Collectives c;
+};
+
 // With the normaliser lag the stepping times of a round arrive lag rounds late: those stepped
 // before chains last moved describe the old placement and must not ask for the move again. Rank 1
 // takes three times as long per chain (times in proportion to the chains it hosts): a quarter of
@@ -248,29 +277,11 @@ TEST(ReplicaPool, BalancingUnderALagMovesOnceForOneSpeedDifference) {
   fx.settings.placement = Placement::Spread;
   fx.settings.balanceWindow = 1.0;
   const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
-  ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
-  std::vector<Film> fa(1, Film(16, 12)), fb(1, Film(16, 12));
-  Collectives c(a.groups());
-  auto hostedInGroup = [&](int rank, int g) {
-    int n = 0;
-    for (int ch = 0; ch < a.chainCount(); ++ch) n += a.groupOf(ch) == g && (rank == 0 ? a.hosts(ch) : b.hosts(ch));
-    return n;
-  };
+  TwoRanks t(fx, lum);
   for (uint64_t r = 0; r < uint64_t(fx.settings.normaliserLag) + 60; ++r)
-    for (int g = 0; g < a.groups(); ++g) {
-      a.runRound(g, 1, fa);
-      b.runRound(g, 1, fb);
-      const double s0 = 0.01 * hostedInGroup(0, g), s1 = 0.03 * hostedInGroup(1, g);
-      c.post(g, {a.roundMessage(g, 0.0, s0), b.roundMessage(g, 0.0, s1)});
-      c.finish({&a, &b}, g, r);
-      ASSERT_EQ(a.plannedMoves(), b.plannedMoves());
-      for (const ChainMove& m : a.plannedMoves())
-        (m.to == 0 ? a : b).importChain(m.chain, (m.to == 0 ? b : a).exportChain(m.chain));
-      a.commitMoves();
-      b.commitMoves();
-    }
-  for (int g = 0; g < a.groups(); ++g) EXPECT_EQ(hostedInGroup(0, g), 15) << "group " << g;
-  EXPECT_EQ(a.chainMoves(), 10u) << "5 chains per group, moved once";
+    for (int g = 0; g < t.a.groups(); ++g) t.round(r, g, 0.01 * t.hostedInGroup(0, g), 0.03 * t.hostedInGroup(1, g));
+  for (int g = 0; g < t.a.groups(); ++g) EXPECT_EQ(t.hostedInGroup(0, g), 15) << "group " << g;
+  EXPECT_EQ(t.a.chainMoves(), 10u) << "5 chains per group, moved once";
 }
 
 // A persistent imbalance smaller than one window's timing noise: rank 1 is 12 % slower (moving 2 of
@@ -287,37 +298,21 @@ TEST(ReplicaPool, AnImbalanceHiddenInOneWindowsNoiseIsFoundByMeasuringLonger) {
   // counts group rounds x groups) holds about 8 rounds.
   fx.settings.balanceWindow = 8.0 * 0.448 * 2.0;
   const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
-  ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
-  std::vector<Film> fa(1, Film(16, 12)), fb(1, Film(16, 12));
-  Collectives c(a.groups());
-  auto hostedInGroup = [&](int rank, int g) {
-    int n = 0;
-    for (int ch = 0; ch < a.chainCount(); ++ch) n += a.groupOf(ch) == g && (rank == 0 ? a.hosts(ch) : b.hosts(ch));
-    return n;
-  };
-  for (int g = 0; g < a.groups(); ++g) ASSERT_EQ(hostedInGroup(0, g), 40);
+  TwoRanks t(fx, lum);
+  for (int g = 0; g < t.a.groups(); ++g) ASSERT_EQ(t.hostedInGroup(0, g), 40);
   uint64_t firstMove = 0;
   const uint64_t lag = uint64_t(fx.settings.normaliserLag);
   for (uint64_t r = 0; r < lag + 200; ++r)
-    for (int g = 0; g < a.groups(); ++g) {
-      a.runRound(g, 1, fa);
-      b.runRound(g, 1, fb);
+    for (int g = 0; g < t.a.groups(); ++g) {
       const double wobble = r % 2 == 0 ? 1.15 : 0.85;
-      const double s0 = 0.01 * hostedInGroup(0, g) * wobble, s1 = 0.0112 * hostedInGroup(1, g) * wobble;
-      c.post(g, {a.roundMessage(g, 0.0, s0), b.roundMessage(g, 0.0, s1)});
-      c.finish({&a, &b}, g, r);
-      ASSERT_EQ(a.plannedMoves(), b.plannedMoves());
-      if (!a.plannedMoves().empty() && firstMove == 0) firstMove = r;
-      for (const ChainMove& m : a.plannedMoves())
-        (m.to == 0 ? a : b).importChain(m.chain, (m.to == 0 ? b : a).exportChain(m.chain));
-      a.commitMoves();
-      b.commitMoves();
+      const bool moved = t.round(r, g, 0.01 * t.hostedInGroup(0, g) * wobble, 0.0112 * t.hostedInGroup(1, g) * wobble);
+      if (moved && firstMove == 0) firstMove = r;
     }
   // Not before about 60 rounds had been read back; then 42 chains per group on the faster rank
   // (42.3 would balance), moved once per group, and never back.
   EXPECT_GT(firstMove, lag + 50) << "moved on a window's noise";
-  for (int g = 0; g < a.groups(); ++g) EXPECT_EQ(hostedInGroup(0, g), 42) << "group " << g;
-  EXPECT_EQ(a.chainMoves(), 4u);
+  for (int g = 0; g < t.a.groups(); ++g) EXPECT_EQ(t.hostedInGroup(0, g), 42) << "group " << g;
+  EXPECT_EQ(t.a.chainMoves(), 4u);
 }
 
 // A time budget under the normaliser lag: elapsed times come back lag rounds late, so the loop
