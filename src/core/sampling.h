@@ -1,5 +1,6 @@
 #pragma once
 // Warps from the unit square to common domains, with their densities.
+#include <algorithm>
 #include <vector>
 
 #include "core/math.h"
@@ -79,9 +80,27 @@ class Distribution1D {
   double total() const { return total_; }
   float pmf(size_t i) const { return pmf_[i]; }
   // Returns an index and rescales u to a fresh uniform number in [0, 1) for reuse.
-  size_t sample(float u, float* uRemapped = nullptr) const;
+  size_t sample(float u, float* uRemapped = nullptr) const {
+    const double target = static_cast<double>(u) * total_;
+    // First index whose upper CDF bound exceeds the target (std::upper_bound's answer), found
+    // without data-dependent branches: light picks land on random entries, and mispredicted
+    // search branches cost more than the comparisons.
+    const double* base = cdf_.data() + 1;
+    for (size_t n = cdf_.size() - 1; n > 1;) {
+      const size_t half = n / 2;
+      base += base[half] <= target ? half : 0;
+      n -= half;
+    }
+    base += *base <= target ? 1 : 0;
+    size_t i = std::min(static_cast<size_t>(base - cdf_.data() - 1), pmf_.size() - 1);
+    while (pmf_[i] == 0.0f && i > 0) --i;  // skip zero-weight entries
+    if (uRemapped) *uRemapped = remap(target, i);
+    return i;
+  }
 
  private:
+  float remap(double target, size_t i) const;
+
   std::vector<float> pmf_;
   std::vector<double> cdf_;
   double total_ = 0.0;

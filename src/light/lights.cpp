@@ -40,32 +40,33 @@ LightSampler::LightSampler(const Scene& scene, const RayTracer& tracer)
     power.push_back(solidAngle * luminance(l.intensity));
   }
   pick_ = Distribution1D(power);
-}
 
-LightPoint LightSampler::samplePoint(float uPick, const Vec2& uPos) const {
-  LightPoint lp;
-  lp.light = static_cast<uint32_t>(pick_.sample(uPick));
-  lp.pdfPick = pick_.pmf(lp.light);
-  const Light& l = lights_[lp.light];
-  if (l.kind == Light::Kind::Triangle) {
-    const Vec2 b = uniformTriangle(uPos);
-    lp.sp = tracer_.surfacePoint(l.index, b.x, b.y);
-    lp.pdfPos = 1.0f / tracer_.triangleArea(l.index);
-  } else {
-    const PunctualLight& pl = scene_.punctualLights[l.index];
-    lp.sp.p = pl.position;
-    lp.sp.ng = lp.sp.ns = pl.spot ? pl.direction : Vec3(0, 0, 1);
-    lp.delta = true;
-    lp.pdfPos = 1.0f;
+  for (uint32_t i = 0; i < lights_.size() && lights_[i].kind == Light::Kind::Triangle; ++i) {
+    const uint32_t t = lights_[i].index;
+    const Triangle& tri = scene.triangles[t];
+    TriangleEmitter e;
+    for (int k = 0; k < 3; ++k) e.p[k] = scene.positions[tri.v[k]];
+    e.ng = tracer.triangleNormal(t);
+    e.ns = tracer.flatShadingNormal(t);
+    e.triangle = t;
+    e.material = tri.material;
+    e.pdfPick = pick_.pmf(i);
+    e.pdfPos = 1.0f / tracer.triangleArea(t);
+    emitters_.push_back(e);
   }
-  return lp;
+  for (const Material& m : scene.materials) emission_.push_back({m.emission, m.isEmissive(), m.doubleSided});
 }
 
-Color LightSampler::emitted(const SurfacePoint& sp, const Vec3& w) const {
-  const Material& m = scene_.materials[sp.material];
-  if (!m.isEmissive()) return Color(0.0f);
-  if (!m.doubleSided && glm::dot(sp.ng, w) <= 0.0f) return Color(0.0f);
-  return m.emission;
+LightPoint LightSampler::samplePunctual(uint32_t light) const {
+  LightPoint lp;
+  lp.light = light;
+  lp.pdfPick = pick_.pmf(light);
+  const PunctualLight& pl = scene_.punctualLights[lights_[light].index];
+  lp.sp.p = pl.position;
+  lp.sp.ng = lp.sp.ns = pl.spot ? pl.direction : Vec3(0, 0, 1);
+  lp.delta = true;
+  lp.pdfPos = 1.0f;
+  return lp;
 }
 
 Color LightSampler::intensity(uint32_t light, const Vec3& w) const {

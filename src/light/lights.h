@@ -33,9 +33,33 @@ class LightSampler {
   const Light& light(uint32_t i) const { return lights_[i]; }
 
   // Pick a light by power and a position on it (u: one number for the pick, two for the position).
-  LightPoint samplePoint(float uPick, const Vec2& uPos) const;
+  // Inline, from a table of the emissive triangles: it runs at every path vertex.
+  LightPoint samplePoint(float uPick, const Vec2& uPos) const {
+    const uint32_t i = static_cast<uint32_t>(pick_.sample(uPick));
+    if (i >= emitters_.size()) return samplePunctual(i);
+    const TriangleEmitter& e = emitters_[i];
+    LightPoint lp;
+    lp.light = i;
+    lp.pdfPick = e.pdfPick;
+    lp.pdfPos = e.pdfPos;
+    const Vec2 b = uniformTriangle(uPos);
+    if (e.ns == Vec3(0.0f)) {
+      lp.sp = tracer_.surfacePoint(e.triangle, b.x, b.y);
+    } else {  // the same arithmetic as RayTracer::surfacePoint
+      lp.sp.p = (1.0f - b.x - b.y) * e.p[0] + b.x * e.p[1] + b.y * e.p[2];
+      lp.sp.ng = e.ng;
+      lp.sp.ns = e.ns;
+      lp.sp.triangle = e.triangle;
+      lp.sp.material = e.material;
+    }
+    return lp;
+  }
   // Radiance leaving an area light point in direction w (zero on the back of one-sided emitters).
-  Color emitted(const SurfacePoint& sp, const Vec3& w) const;
+  Color emitted(const SurfacePoint& sp, const Vec3& w) const {
+    const MaterialEmission& m = emission_[sp.material];
+    if (!m.emissive || (!m.doubleSided && glm::dot(sp.ng, w) <= 0.0f)) return Color(0.0f);
+    return m.radiance;
+  }
   // Intensity of a punctual light in direction w (W/sr), including the spot falloff.
   Color intensity(uint32_t light, const Vec3& w) const;
 
@@ -54,9 +78,25 @@ class LightSampler {
   float pdfDirection(uint32_t light, const SurfacePoint& sp, const Vec3& w) const;
 
  private:
+  // What sampling a point on an emissive triangle needs, without lookups through the scene.
+  struct TriangleEmitter {
+    Vec3 p[3];
+    Vec3 ng;
+    Vec3 ns;  // the triangle's constant shading normal; zero where it varies over the triangle
+    uint32_t triangle = 0, material = 0;
+    float pdfPick = 0.0f, pdfPos = 0.0f;
+  };
+  struct MaterialEmission {
+    Color radiance{0.0f};
+    bool emissive = false, doubleSided = false;
+  };
+  LightPoint samplePunctual(uint32_t light) const;
+
   const Scene& scene_;
   const RayTracer& tracer_;
-  std::vector<Light> lights_;
+  std::vector<Light> lights_;  // the emissive triangles first, then the punctual lights
+  std::vector<TriangleEmitter> emitters_;  // lights_[i] for i < emitters_.size()
+  std::vector<MaterialEmission> emission_;  // per material
   std::vector<uint32_t> triangleLight_;  // triangle -> light index (UINT32_MAX if not emissive)
   Distribution1D pick_;
 };

@@ -69,6 +69,8 @@ class RayTracer {
   const Scene& scene() const { return scene_; }
   float triangleArea(uint32_t t) const { return area_[t]; }
   const Vec3& triangleNormal(uint32_t t) const { return ng_[t]; }
+  // The unit shading normal of a triangle whose vertex normals agree; zero where it varies.
+  const Vec3& flatShadingNormal(uint32_t t) const { return flatNs_[t]; }
   // Surface point at barycentrics (b1, b2) of triangle t.
   SurfacePoint surfacePoint(uint32_t t, float b1, float b2) const {
     const Triangle& tri = scene_.triangles[t];

@@ -1,6 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+
+#include "core/rng.h"
 
 #include "core/sampling.h"
 
@@ -23,6 +26,34 @@ TEST(Distribution1D, RemappedNumberIsUniformWithinTheChosenBin) {
   float r = -1.0f;
   EXPECT_EQ(d.sample(0.75f, &r), 1u);
   EXPECT_NEAR(r, 0.5f, 1e-6f);
+}
+
+TEST(Distribution1D, BranchlessSearchPicksTheUpperBoundEntry) {
+  // Reference: the first entry whose upper CDF bound exceeds u * total (std::upper_bound),
+  // stepped back over zero weights. Sizes 1-40, zeros included, u on and between CDF bounds.
+  Rng rng(7);
+  for (int n = 1; n <= 40; ++n) {
+    std::vector<double> w(size_t(n), 0.0);
+    for (double& x : w) x = rng.uniform() < 0.25f ? 0.0 : rng.uniform();
+    w[rng.below(uint32_t(n))] = 1.0;
+    const Distribution1D d(w);
+    std::vector<double> cdf(1, 0.0);
+    for (double x : w) cdf.push_back(cdf.back() + x);
+    std::vector<float> us = {0.0f, 0x1.fffffep-1f};
+    for (int i = 0; i < 200; ++i) us.push_back(rng.uniform());
+    for (double c : cdf) us.push_back(static_cast<float>(c / cdf.back()));
+    for (float u : us) {
+      if (!(u < 1.0f)) continue;
+      const double target = double(u) * cdf.back();
+      size_t expected = std::min(size_t(std::upper_bound(cdf.begin() + 1, cdf.end(), target) - cdf.begin() - 1), w.size() - 1);
+      while (w[expected] == 0.0 && expected > 0) --expected;
+      EXPECT_EQ(d.sample(u), expected) << "n " << n << " u " << u;
+    }
+  }
+  // A target exactly on a bound belongs to the entry above it.
+  const Distribution1D exact({1.0, 1.0, 2.0});
+  EXPECT_EQ(exact.sample(0.25f), 1u);
+  EXPECT_EQ(exact.sample(0.5f), 2u);
 }
 
 TEST(Warps, PolynomialCosSinMatchesLibmOnTheQuarterPiRange) {

@@ -320,3 +320,36 @@ TEST_F(Mixed, SpotIntensityFallsOffBetweenTheCones) {
   EXPECT_NEAR(lights.intensity(l, at(0.5f)).x, s.intensity.x * x * x, 1e-4f);  // float cosines
   EXPECT_EQ(lights.intensity(punctual(0), Vec3(0, -1, 0)), scene.punctualLights[0].intensity);
 }
+
+TEST(LightTable, SampledPointsEqualTheTracersSurfacePoints) {
+  // The sampler keeps its own copy of each emissive triangle; points drawn from it must be the
+  // ray tracer's surface points bit for bit, on flat triangles and on one with varying normals.
+  Scene scene = mixedScene();
+  scene.normals[3] = glm::normalize(Vec3(0.2f, 0.0f, -1.0f));
+  scene.normals[4] = glm::normalize(Vec3(0.0f, 0.3f, -1.0f));
+  scene.normals[5] = Vec3(0.0f, 0.0f, -1.0f);
+  const RayTracer tracer(scene);
+  const LightSampler lights(scene, tracer);
+  Rng rng(3);
+  int triangles = 0, smooth = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const float uPick = rng.uniform();
+    const Vec2 uPos(rng.uniform(), rng.uniform());
+    const LightPoint lp = lights.samplePoint(uPick, uPos);
+    EXPECT_EQ(lp.pdfPick, lights.pdfPick(lp.light));
+    EXPECT_EQ(lp.pdfPos, lights.pdfPosition(lp.light));
+    if (lights.light(lp.light).kind != Light::Kind::Triangle) continue;
+    ++triangles;
+    const uint32_t t = lights.light(lp.light).index;
+    smooth += t == 1;
+    const Vec2 b = uniformTriangle(uPos);
+    const SurfacePoint sp = tracer.surfacePoint(t, b.x, b.y);
+    EXPECT_EQ(lp.sp.p, sp.p);
+    EXPECT_EQ(lp.sp.ng, sp.ng);
+    EXPECT_EQ(lp.sp.ns, sp.ns);
+    EXPECT_EQ(lp.sp.triangle, t);
+    EXPECT_EQ(lp.sp.material, sp.material);
+  }
+  EXPECT_GT(smooth, 100);
+  EXPECT_GT(triangles - smooth, 100);
+}
