@@ -79,7 +79,8 @@ class Distribution1D {
   bool empty() const { return pmf_.empty(); }
   double total() const { return total_; }
   float pmf(size_t i) const { return pmf_[i]; }
-  // Returns an index and rescales u to a fresh uniform number in [0, 1) for reuse.
+  // Returns an index and rescales u to a fresh uniform number in [0, 1) for reuse. Needs at least
+  // one entry (the light sampler is never asked when the scene has no light).
   size_t sample(float u, float* uRemapped = nullptr) const {
     const double target = static_cast<double>(u) * total_;
     // First index whose upper CDF bound exceeds the target (std::upper_bound's answer), found
