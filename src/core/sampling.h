@@ -94,7 +94,7 @@ class Distribution1D {
     }
     base += *base <= target ? 1 : 0;
     size_t i = std::min(static_cast<size_t>(base - cdf_.data() - 1), pmf_.size() - 1);
-    while (pmf_[i] == 0.0f && i > 0) --i;  // skip zero-weight entries
+    while (pmf_[i] == 0.0f && i > 0) --i;  // only when every weight is zero: answer the first entry
     if (uRemapped) *uRemapped = remap(target, i);
     return i;
   }

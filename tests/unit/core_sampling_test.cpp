@@ -54,6 +54,9 @@ TEST(Distribution1D, BranchlessSearchPicksTheUpperBoundEntry) {
   const Distribution1D exact({1.0, 1.0, 2.0});
   EXPECT_EQ(exact.sample(0.25f), 1u);
   EXPECT_EQ(exact.sample(0.5f), 2u);
+  // Without any weight the pick is still an index of the table (the first).
+  const Distribution1D none({0.0, 0.0, 0.0});
+  for (float u : {0.0f, 0.5f, 0x1.fffffep-1f}) EXPECT_EQ(none.sample(u), 0u);
 }
 
 TEST(Warps, PolynomialCosSinMatchesLibmOnTheQuarterPiRange) {

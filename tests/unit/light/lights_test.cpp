@@ -323,8 +323,10 @@ TEST_F(Mixed, SpotIntensityFallsOffBetweenTheCones) {
 
 TEST(LightTable, SampledPointsEqualTheTracersSurfacePoints) {
   // The sampler keeps its own copy of each emissive triangle; points drawn from it must be the
-  // ray tracer's surface points bit for bit, on flat triangles and on one with varying normals.
+  // ray tracer's surface points bit for bit, on a flat triangle whose shading normal is tilted off
+  // its geometric one (equal vertex normals) and on one with varying normals.
   Scene scene = mixedScene();
+  for (int v = 0; v < 3; ++v) scene.normals[v] = glm::normalize(Vec3(0.3f, -0.2f, 1.0f));
   scene.normals[3] = glm::normalize(Vec3(0.2f, 0.0f, -1.0f));
   scene.normals[4] = glm::normalize(Vec3(0.0f, 0.3f, -1.0f));
   scene.normals[5] = Vec3(0.0f, 0.0f, -1.0f);
