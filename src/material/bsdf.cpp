@@ -140,7 +140,7 @@ float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
   return evalLocal(*material_, frame_, ng_, alpha_, rough_.distribution, wo, wi, TransportMode::Radiance).pdf;
 }
 
-Bsdf::Value Bsdf::evaluate(const Vec3& wo, const Vec3& wi, TransportMode mode) const {
+Bsdf::Value Bsdf::evaluateLobes(const Vec3& wo, const Vec3& wi, TransportMode mode) const {
   const LobeValue v = evalLocal(*material_, frame_, ng_, alpha_, rough_.distribution, wo, wi, mode);
   return {v.f, v.pdf};
 }

@@ -48,7 +48,15 @@ class Bsdf {
     Color f;
     float pdf;
   };
-  Value evaluate(const Vec3& wo, const Vec3& wi, TransportMode mode) const;
+  // Lambert inline (next-event estimation calls this at every diffuse vertex), the same
+  // arithmetic as the general path.
+  Value evaluate(const Vec3& wo, const Vec3& wi, TransportMode mode) const {
+    if (material_->kind != MaterialKind::Lambert) return evaluateLobes(wo, wi, mode);
+    const float go = glm::dot(wo, ng_), gi = glm::dot(wi, ng_);
+    const float co = glm::dot(wo, frame_.n), ci = glm::dot(wi, frame_.n);
+    if (go == 0.0f || gi == 0.0f || (go > 0.0f) != (gi > 0.0f) || co * ci <= 0.0f) return {Color(0.0f), 0.0f};
+    return {material_->baseColor * kInvPi, std::abs(ci) * kInvPi};
+  }
   // u: two numbers for the direction, uLobe: one for the lobe choice (reflect/refract).
   std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float uLobe, TransportMode mode) const;
 
@@ -59,6 +67,8 @@ class Bsdf {
   const Vec3& geometricNormal() const { return ng_; }
 
  private:
+  Value evaluateLobes(const Vec3& wo, const Vec3& wi, TransportMode mode) const;
+
   const Material* material_;
   Frame frame_;
   Vec3 ng_;
