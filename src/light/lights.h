@@ -45,8 +45,8 @@ class LightSampler {
     const Vec2 b = uniformTriangle(uPos);
     if (e.ns == Vec3(0.0f)) {
       lp.sp = tracer_.surfacePoint(e.triangle, b.x, b.y);
-    } else {  // the same arithmetic as RayTracer::surfacePoint
-      lp.sp.p = (1.0f - b.x - b.y) * e.p[0] + b.x * e.p[1] + b.y * e.p[2];
+    } else {
+      lp.sp.p = RayTracer::barycentricPoint(e.p[0], e.p[1], e.p[2], b.x, b.y);
       lp.sp.ng = e.ng;
       lp.sp.ns = e.ns;
       lp.sp.triangle = e.triangle;

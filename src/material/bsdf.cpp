@@ -94,14 +94,12 @@ LobeValue roughDielectric(const Material& mat, const MicrofacetDistribution& dis
 // Shared by eval and pdf (and by sample, so that all three agree exactly).
 LobeValue evalLocal(const Material& mat, const Frame& frame, const Vec3& ng, float alpha, Microfacet type,
                     const Vec3& woW, const Vec3& wiW, TransportMode mode) {
+  if (mat.kind == MaterialKind::Lambert) {
+    const Bsdf::Value v = Bsdf::lambert(mat, frame, ng, woW, wiW);
+    return {v.f, v.pdf};
+  }
   const float go = glm::dot(woW, ng), gi = glm::dot(wiW, ng);
   if (go == 0.0f || gi == 0.0f) return {};
-  if (mat.kind == MaterialKind::Lambert) {
-    // The opaque case below with only the normal components, which is all Lambert needs.
-    const float co = glm::dot(woW, frame.n), ci = glm::dot(wiW, frame.n);
-    if (onPositiveSide(go) != onPositiveSide(gi) || co * ci <= 0.0f) return {};
-    return {mat.baseColor * kInvPi, std::abs(ci) * kInvPi};
-  }
   Vec3 wo = frame.toLocal(woW), wi = frame.toLocal(wiW);
   if (mat.kind == MaterialKind::Dielectric) {
     // Both directions must be on the same side in the shading frame as geometrically: the side

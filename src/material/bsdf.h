@@ -48,14 +48,18 @@ class Bsdf {
     Color f;
     float pdf;
   };
-  // Lambert inline (next-event estimation calls this at every diffuse vertex), the same
-  // arithmetic as the general path.
+  // Lambert inline (next-event estimation calls this at every diffuse vertex).
   Value evaluate(const Vec3& wo, const Vec3& wi, TransportMode mode) const {
     if (material_->kind != MaterialKind::Lambert) return evaluateLobes(wo, wi, mode);
-    const float go = glm::dot(wo, ng_), gi = glm::dot(wi, ng_);
-    const float co = glm::dot(wo, frame_.n), ci = glm::dot(wi, frame_.n);
+    return lambert(*material_, frame_, ng_, wo, wi);
+  }
+  // Lambert's value and density: reflection as judged by ng, with the shading frame agreeing; only
+  // the normal components of wo and wi matter. evalLocal uses it too.
+  static Value lambert(const Material& mat, const Frame& frame, const Vec3& ng, const Vec3& wo, const Vec3& wi) {
+    const float go = glm::dot(wo, ng), gi = glm::dot(wi, ng);
+    const float co = glm::dot(wo, frame.n), ci = glm::dot(wi, frame.n);
     if (go == 0.0f || gi == 0.0f || (go > 0.0f) != (gi > 0.0f) || co * ci <= 0.0f) return {Color(0.0f), 0.0f};
-    return {material_->baseColor * kInvPi, std::abs(ci) * kInvPi};
+    return {mat.baseColor * kInvPi, std::abs(ci) * kInvPi};
   }
   // u: two numbers for the direction, uLobe: one for the lobe choice (reflect/refract).
   std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float uLobe, TransportMode mode) const;

@@ -71,12 +71,17 @@ class RayTracer {
   const Vec3& triangleNormal(uint32_t t) const { return ng_[t]; }
   // The unit shading normal of a triangle whose vertex normals agree; zero where it varies.
   const Vec3& flatShadingNormal(uint32_t t) const { return flatNs_[t]; }
+  // The point at barycentrics (b1, b2) of the triangle p0 p1 p2: every surface point's position
+  // comes from here, so points rebuilt from copied corners equal the tracer's bit for bit.
+  static Vec3 barycentricPoint(const Vec3& p0, const Vec3& p1, const Vec3& p2, float b1, float b2) {
+    return (1.0f - b1 - b2) * p0 + b1 * p1 + b2 * p2;
+  }
   // Surface point at barycentrics (b1, b2) of triangle t.
   SurfacePoint surfacePoint(uint32_t t, float b1, float b2) const {
     const Triangle& tri = scene_.triangles[t];
     const float b0 = 1.0f - b1 - b2;
     SurfacePoint sp;
-    sp.p = b0 * scene_.positions[tri.v[0]] + b1 * scene_.positions[tri.v[1]] + b2 * scene_.positions[tri.v[2]];
+    sp.p = barycentricPoint(scene_.positions[tri.v[0]], scene_.positions[tri.v[1]], scene_.positions[tri.v[2]], b1, b2);
     sp.ng = ng_[t];
     const Vec3& flat = flatNs_[t];
     sp.ns = flat.x != 0.0f || flat.y != 0.0f || flat.z != 0.0f ? flat : interpolatedNormal(tri, b0, b1, b2, sp.ng);
