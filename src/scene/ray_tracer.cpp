@@ -44,6 +44,15 @@ void setRay(RTCRay& r, const Vec3& o, const Vec3& d, float tfar) {
   r.flags = 0;
 }
 
+// Vectors whose dot products with (p - p0) give the barycentrics (b1, b2) of a point p in the
+// triangle's plane: the dual basis of the edges p1 - p0 and p2 - p0. Zero for a degenerate one.
+RayTracer::BarycentricAxes barycentricAxes(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
+  const Vec3 e1 = p1 - p0, e2 = p2 - p0, n = glm::cross(e1, e2);
+  const float n2 = glm::dot(n, n);
+  if (!(n2 > 0.0f)) return {Vec3(0.0f), Vec3(0.0f)};
+  return {glm::cross(e2, n) / n2, glm::cross(n, e1) / n2};
+}
+
 }  // namespace
 
 RayTracer::RayTracer(const Scene& scene) : scene_(scene) {
@@ -61,6 +70,7 @@ RayTracer::RayTracer(const Scene& scene) : scene_(scene) {
   ng_.resize(nt);
   area_.resize(nt);
   flatNs_.resize(nt);
+  baryAxes_.resize(nt);
   for (size_t i = 0; i < nt; ++i) {
     const Triangle& t = scene.triangles[i];
     const Vec3 c = glm::cross(scene.positions[t.v[1]] - scene.positions[t.v[0]],
@@ -68,6 +78,7 @@ RayTracer::RayTracer(const Scene& scene) : scene_(scene) {
     const float len = glm::length(c);
     area_[i] = 0.5f * len;
     ng_[i] = len > 0.0f ? c / len : Vec3(0, 0, 1);
+    baryAxes_[i] = barycentricAxes(scene.positions[t.v[0]], scene.positions[t.v[1]], scene.positions[t.v[2]]);
     // Equal (or missing) vertex normals: the shading normal is constant, no need to interpolate.
     const Vec3 &n0 = scene.normals[t.v[0]], &n1 = scene.normals[t.v[1]], &n2 = scene.normals[t.v[2]];
     const float len2 = glm::dot(n0, n0);
@@ -80,7 +91,8 @@ RayTracer::RayTracer(const Scene& scene) : scene_(scene) {
   rtcScene_ = rtcNewScene(device_);
   rtcSetSceneBuildQuality(rtcScene_, RTC_BUILD_QUALITY_HIGH);
   if (nt > 0) {
-    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    quads_ = pairTriangles(scene.triangles, scene.positions);
+    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_QUAD);
     rtcSetGeometryBuildQuality(geom, RTC_BUILD_QUALITY_HIGH);
     auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                           3 * sizeof(float), scene.positions.size()));
@@ -89,10 +101,10 @@ RayTracer::RayTracer(const Scene& scene) : scene_(scene) {
       v[3 * i + 1] = scene.positions[i].y;
       v[3 * i + 2] = scene.positions[i].z;
     }
-    auto* idx = static_cast<unsigned*>(
-        rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), nt));
-    for (size_t i = 0; i < nt; ++i)
-      for (int k = 0; k < 3; ++k) idx[3 * i + k] = scene.triangles[i].v[k];
+    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT4,
+                                                               4 * sizeof(unsigned), quads_.size()));
+    for (size_t i = 0; i < quads_.size(); ++i)
+      for (int k = 0; k < 4; ++k) idx[4 * i + k] = quads_[i].v[k];
     rtcCommitGeometry(geom);
     rtcAttachGeometry(rtcScene_, geom);
     rtcReleaseGeometry(geom);
@@ -112,6 +124,15 @@ Vec3 RayTracer::interpolatedNormal(const Triangle& tri, float b0, float b1, floa
   return len2 > 1e-12f ? n / std::sqrt(len2) : ng;
 }
 
+// Out of line on purpose: single rays and packets must compute a hit's point with the same code.
+[[gnu::noinline]] SurfacePoint RayTracer::hitPoint(uint32_t quad, float u, float v, const Vec3& origin, const Vec3& dir,
+                                                   float distance) const {
+  const uint32_t t = hitTriangle(quads_[quad], u, v);
+  const Vec3 q = origin + distance * dir - scene_.positions[scene_.triangles[t].v[0]];
+  const BarycentricAxes& a = baryAxes_[t];
+  return surfacePoint(t, glm::dot(q, a.b1), glm::dot(q, a.b2));
+}
+
 bool RayTracer::intersect(const Ray& ray, SurfacePoint& hit, float& distance) const {
   ++rays_;
   if (!traceableRay(ray.origin, ray.dir) || std::isnan(ray.tMax)) return false;
@@ -124,7 +145,7 @@ bool RayTracer::intersect(const Ray& ray, SurfacePoint& hit, float& distance) co
   rtcIntersect1(rtcScene_, &ctx, &rh);
   if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
   distance = rh.ray.tfar;
-  hit = surfacePoint(rh.hit.primID, rh.hit.u, rh.hit.v);
+  hit = hitPoint(rh.hit.primID, rh.hit.u, rh.hit.v, ray.origin, ray.dir, distance);
   return true;
 }
 
@@ -236,7 +257,8 @@ void RayTracer::intersectPackets(const Ray* rays, int n, SurfacePoint* hits, flo
       if (!valid[i] || rh.hit.geomID[i] == RTC_INVALID_GEOMETRY_ID) continue;
       found[base + i] = true;
       distance[base + i] = rh.ray.tfar[i];
-      hits[base + i] = surfacePoint(rh.hit.primID[i], rh.hit.u[i], rh.hit.v[i]);
+      hits[base + i] = hitPoint(rh.hit.primID[i], rh.hit.u[i], rh.hit.v[i], rays[base + i].origin, rays[base + i].dir,
+                                distance[base + i]);
     }
   }
 }

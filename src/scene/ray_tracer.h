@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "scene/quad_pairs.h"
 #include "scene/scene.h"
 
 // Embree handles are opaque pointers; keep embree headers out of the rest of the renderer.
@@ -92,6 +93,10 @@ class RayTracer {
 
   uint64_t rayCount() const { return rays_; }
 
+  struct BarycentricAxes {
+    Vec3 b1, b2;
+  };
+
  private:
   struct ShadowRay;
   // The ray an occlusion query traces; false with `blocked` set when none is needed.
@@ -101,12 +106,18 @@ class RayTracer {
   template <int K>
   void occludedPackets(const Segment* segs, int n, bool* blocked) const;
 
+  // The surface point of an Embree hit (u, v) at `distance` along the ray on quad primitive `quad`.
+  // The barycentrics come from the hit position, not from Embree's (u, v): Embree's packet and
+  // single-ray quad kernels round (u, v) differently, the distance they agree on.
+  SurfacePoint hitPoint(uint32_t quad, float u, float v, const Vec3& origin, const Vec3& dir, float distance) const;
   // Unit shading normal interpolated from the vertex normals (the geometric one if degenerate).
   Vec3 interpolatedNormal(const Triangle& tri, float b0, float b1, float b2, const Vec3& ng) const;
 
   const Scene& scene_;
   RTCDevice device_ = nullptr;
   RTCScene rtcScene_ = nullptr;
+  std::vector<QuadPrim> quads_;  // Embree's primitives: the scene's triangles in pairs
+  std::vector<BarycentricAxes> baryAxes_;  // per triangle: barycentrics from a point in its plane
   std::vector<Vec3> ng_;
   std::vector<float> area_;
   std::vector<Vec3> flatNs_;  // unit shading normal of triangles whose vertex normals agree, else 0

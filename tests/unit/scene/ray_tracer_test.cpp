@@ -15,7 +15,8 @@ using namespace relt;
 
 namespace {
 
-const char* const kScenes[] = {"cornell-box", "ring", "glass-cube", "door-ajar", "torus-in-glass"};
+// Quads of consecutive triangles, of triangles paired across the mesh, and lone triangles (furnace).
+const char* const kScenes[] = {"cornell-box", "ring", "glass-cube", "door-ajar", "torus-in-glass", "furnace"};
 
 Scene load(const std::string& name) { return loadGltf(test::sourcePath("scenes/" + name + ".gltf")); }
 
