@@ -43,24 +43,24 @@ struct EdgeEntry {
   bool operator<(const EdgeEntry& o) const { return key != o.key ? key < o.key : triangle < o.triangle; }
 };
 
-std::vector<EdgeEntry> edgeTable(const std::vector<Triangle>& triangles, const std::vector<Vec3>& positions) {
+// The edges of the triangles `which`; only their corners are welded (a mesh's leftovers are few).
+std::vector<EdgeEntry> edgeTable(const std::vector<Triangle>& triangles, const std::vector<Vec3>& positions,
+                                 const std::vector<uint32_t>& which) {
   auto bits = [](float f) { return uint64_t(std::bit_cast<uint32_t>(f == 0.0f ? 0.0f : f)); };  // -0 == +0
   struct Hash {
     size_t operator()(const std::array<uint64_t, 2>& k) const { return std::hash<uint64_t>()(k[0] * 0x9e3779b97f4a7c15ull ^ k[1]); }
   };
-  std::unordered_map<std::array<uint64_t, 2>, uint32_t, Hash> ids;
-  std::vector<uint32_t> welded(positions.size());
-  for (size_t i = 0; i < positions.size(); ++i) {
-    const Vec3& p = positions[i];
-    welded[i] = ids.try_emplace({bits(p.x) << 32 | bits(p.y), bits(p.z)}, uint32_t(ids.size())).first->second;
-  }
+  std::unordered_map<std::array<uint64_t, 2>, uint64_t, Hash> ids;
+  auto weld = [&](uint32_t vertex) {
+    const Vec3& p = positions[vertex];
+    return ids.try_emplace({bits(p.x) << 32 | bits(p.y), bits(p.z)}, uint64_t(ids.size())).first->second;
+  };
   std::vector<EdgeEntry> edges;
-  edges.reserve(3 * triangles.size());
-  for (uint32_t t = 0; t < triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const uint64_t a = welded[triangles[t].v[k]], b = welded[triangles[t].v[(k + 1) % 3]];
-      edges.push_back({std::min(a, b) << 32 | std::max(a, b), t});
-    }
+  edges.reserve(3 * which.size());
+  for (uint32_t t : which) {
+    const uint64_t c[3] = {weld(triangles[t].v[0]), weld(triangles[t].v[1]), weld(triangles[t].v[2])};
+    for (int k = 0; k < 3; ++k) edges.push_back({std::min(c[k], c[(k + 1) % 3]) << 32 | std::max(c[k], c[(k + 1) % 3]), t});
+  }
   std::sort(edges.begin(), edges.end());
   return edges;
 }
@@ -83,7 +83,10 @@ std::vector<QuadPrim> pairTriangles(const std::vector<Triangle>& triangles, cons
   for (uint32_t i = 0; i + 1 < n; ++i)
     if (pair(i, i + 1)) ++i;
   // Then any two left over that share an edge (edges in the order of their welded corners).
-  const std::vector<EdgeEntry> edges = edgeTable(triangles, positions);
+  std::vector<uint32_t> leftover;
+  for (uint32_t i = 0; i < n; ++i)
+    if (!paired[i]) leftover.push_back(i);
+  const std::vector<EdgeEntry> edges = edgeTable(triangles, positions, leftover);
   for (size_t e = 0; e < edges.size();) {
     size_t end = e + 1;
     while (end < edges.size() && edges[end].key == edges[e].key) ++end;
