@@ -93,9 +93,12 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
     }
     if (snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, schedule.anotherRound(rounds, elapsed, lastRound))) {
       lastSnapshot = elapsed;
-      std::vector<double> sums = film.data();
+      std::vector<ChainCounters> perDepth;
+      const double b = normaliser(&perDepth, nullptr);
+      Film merged = film;
+      if (mmlt) pool.mergeDepthFilms(mmltDepthWeights(targets, settings.maxDepth, perDepth), merged);
+      std::vector<double> sums = merged.data();
       reduceSumToRoot(sums);
-      const double b = normaliser(nullptr, nullptr);
       if (session.isRoot()) snapshot(sums, pssmltResolveDivisor(schedule.mutationsAfter(rounds), b, area));
     }
   }
@@ -106,6 +109,8 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
   out.rounds = rounds;
   out.totalMutations = schedule.mutationsAfter(rounds);
   out.normaliser = normaliser(&out.perDepth, &out.counters);
+  // mmlt: each path length's film joins the image with its own normaliser and step count.
+  if (mmlt) pool.mergeDepthFilms(mmltDepthWeights(targets, settings.maxDepth, out.perDepth), film);
   return out;
 }
 

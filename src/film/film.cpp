@@ -24,4 +24,10 @@ bool Film::addSample(const PathSample& sample, double weight) {
   return true;
 }
 
+void Film::addWeighted(const Film& other, double weight) {
+  dropped_ += other.dropped_;
+  if (weight == 0.0) return;
+  for (size_t k = 0; k < rgb_.size() && k < other.rgb_.size(); ++k) rgb_[k] += weight * other.rgb_[k];
+}
+
 }  // namespace relt

@@ -19,6 +19,8 @@ class Film {
   // dropped whole and counted: one bad number must not poison a pixel.
   bool addSample(const PathSample& sample, double weight = 1.0);
   void addSplat(const Vec2& film, const Color& value, double weight);
+  // Adds weight x another film's sums (same size) and its dropped-sample count.
+  void addWeighted(const Film& other, double weight);
 
   // Raw sums (r, g, b per pixel, row-major from the top), reduced across ranks by the MPI layer.
   std::vector<double>& data() { return rgb_; }

@@ -17,7 +17,10 @@ class ChainPool {
             const PssmltSettings& settings, const std::vector<int>& chains);
 
   // Advances chain i by steps[i] mutations (indices as in the `chains` given to the constructor).
+  // Splats go to `film`, except for mmlt with a stratified plan: to one film per depth.
   void run(const std::vector<uint64_t>& steps, Film& film);
+  // mmlt, stratified: adds weight[d] x depth d's film to `into` (see mmltDepthWeights); else nothing.
+  void mergeDepthFilms(const std::vector<double>& weight, Film& into) const;
   size_t size() const { return chains_.size(); }
 
   ChainCounters counters() const;
@@ -29,6 +32,8 @@ class ChainPool {
   MmltEvaluator* mmlt_;
   std::vector<McmcChain> chains_;
   std::vector<int> depth_;
+  bool depthFilms_ = false;  // mmlt with a stratified plan
+  std::vector<Film> films_;  // per depth - 1, sized on first use
 };
 
 }  // namespace relt

@@ -4,9 +4,12 @@
 // of that length, and the target is that strategy's MIS-weighted contribution times the number
 // of strategies. Subpaths have exact lengths, so BDPT runs without Russian roulette.
 //
-// The state space is the union over depths: bootstrap sample i has depth 1 + i mod D, chains
-// start at bootstrap samples picked in proportion to their target (so chains spread over depths
-// in proportion to each depth's normaliser b_d), and b = sum over d of b_d.
+// The state space is the union over depths: bootstrap sample i has depth 1 + i mod D, and
+// b = sum over d of b_d. Chains are spread over depths in proportion to b_d by a fixed plan
+// (planMmltChains), not at random: with a random spread (pbrt-v4's, picking each chain's start in
+// proportion to its target), each depth's share of the image is the random share of chains it
+// drew, an error that no amount of running reduces (on cornell-box the directly seen light,
+// depth 1, came out 4-20 % too bright in 10 s renders).
 #include <cstdint>
 #include <vector>
 
@@ -42,6 +45,23 @@ std::vector<double> mmltBootstrapTargets(MmltEvaluator& eval, uint64_t seed, int
 // b = sum over depths of b_d, each from that depth's bootstrap targets pooled with the large steps
 // of the chains at that depth (perDepth may be empty: bootstrap only).
 double mmltNormaliser(const std::vector<double>& targets, int maxDepth, const std::vector<ChainCounters>& perDepth = {});
+// Weight of depth d's film (stratified plan): (b_d / b) (N / N_d) with N_d the steps taken at depth d
+// and N all steps, so that the usual resolve (b area / N) gives each depth b_d area / N_d.
+std::vector<double> mmltDepthWeights(const std::vector<double>& targets, int maxDepth,
+                                     const std::vector<ChainCounters>& perDepth);
+
+// Which depth each chain runs at: n_d chains at depth d, by largest remainder of C b_d / b with at
+// least one for every depth with b_d > 0 (b_d: the bootstrap mean at depth d). Each depth's chains
+// splat into a film of their own, and the films are added with weights from each depth's own
+// normaliser and step count (mmltDepthWeights), so a depth's share of the image is estimated
+// from all its large steps rather than fixed by the bootstrap. With fewer chains than such depths
+// `stratified` is false: chains pick their starts in proportion to their targets over all depths
+// and splat into one film, as in pbrt-v4.
+struct MmltChainPlan {
+  bool stratified = false;
+  std::vector<int> depth;  // per chain index (stratified only)
+};
+MmltChainPlan planMmltChains(const std::vector<double>& bootstrapTargets, int maxDepth, int chains);
 
 // Per-depth acceptance counters are kept too (stats.json reports them).
 ChainCounters runMmltChains(MmltEvaluator& eval, const std::vector<double>& bootstrapTargets, uint64_t seed,

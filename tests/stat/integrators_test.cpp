@@ -21,9 +21,7 @@ RenderSettings settingsFor(Integrator integrator, uint64_t seed, int spp, int si
   s.seed = seed;
   if (isMarkovChain(integrator)) {
     s.mutationsPerPixel = spp;
-    // mmlt spreads its chains over path lengths in proportion to their brightness: with few chains
-    // that random allocation dominates the error, so it gets more (shorter) chains.
-    s.chains = integrator == Integrator::Mmlt ? 2048 : 64;
+    s.chains = 64;
     s.replica.ladders = 8;
   } else {
     s.spp = spp;
