@@ -129,6 +129,10 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
       ->capture_default_str();
   cmd.add_flag("--kelemen-weights", r.kelemenWeights,
                "pssmlt: weight splats by Kelemen's balance heuristic between chain and large-step samples");
+  cmd.add_option("--direct-emission-spp", r.directSpp,
+                 "pssmlt, relt: estimate the directly seen emission apart with N jittered camera rays per pixel and "
+                 "leave the chains the longer paths (0: the chains do it all)")
+      ->check(CLI::Range(0, 1 << 20));
   cmd.add_option("--snapshot-every", r.snapshotEvery,
                  "pssmlt, mmlt: write the image so far (atomically) every this many seconds")
       ->check(CLI::PositiveNumber);
@@ -268,6 +272,9 @@ int main(int argc, char** argv) {
       throw relt::InputError("", "--mutations-per-pixel", "only for the Markov-chain integrators (pssmlt, mmlt, relt)");
     if (o.render.smallStepMin >= o.render.smallStepMax)
       throw relt::InputError("", "--small-step-min", "must be smaller than --small-step-max");
+    if (o.render.directSpp > 0 && o.render.integrator != relt::Integrator::Pssmlt &&
+        o.render.integrator != relt::Integrator::Relt)
+      throw relt::InputError("", "--direct-emission-spp", "only for pssmlt and relt");
     if (o.render.kelemenWeights && o.render.integrator != relt::Integrator::Pssmlt)
       throw relt::InputError("", "--kelemen-weights", "only for pssmlt");
     if (o.render.integrator != relt::Integrator::Erpt && (o.render.erptMaxConsecutive > 0 || o.render.erptProposalFilter))

@@ -99,6 +99,26 @@ struct Gathered {
   std::vector<std::string> hosts;  // each rank's processor name
 };
 
+// pssmlt and relt with --direct-emission-spp: the directly seen emission, rendered apart (row r on
+// rank r mod P, every pixel on its own streams, so the image does not depend on P) and reduced.
+// The root gets the image; other ranks, and runs without the option, an empty one.
+Image directEmission(const Session& session, Renderer& renderer, const RenderSettings& settings) {
+  if (settings.directSpp <= 0) return Image();
+  Film film(settings.width, settings.height);
+  for (int row = session.rank(); row < settings.height; row += session.size())
+    renderer.renderDirect(row, settings.directSpp, film);
+  std::vector<double> sums = film.data();
+  reduceSumToRoot(sums);
+  return session.isRoot() ? Renderer::resolve(film, sums, settings.directSpp) : Image();
+}
+
+// The chains' image plus the separately estimated directly seen emission (if any).
+Image withDirect(Image image, const Image& direct) {
+  if (direct.rgb.size() == image.rgb.size())
+    for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] += direct.rgb[i];
+  return image;
+}
+
 Gathered gatherAfterRender(Clock::time_point renderStart, const Renderer& renderer, Film& film) {
   Gathered g;
   g.renderSeconds = allreduceMax(since(renderStart));
@@ -188,8 +208,9 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
   std::vector<Film> films;
   const auto renderStart = Clock::now();
   int snapshots = 0;
+  const Image direct = directEmission(session, renderer, settings);
   const mpi::ReltOutcome o = mpi::runRelt(session, renderer, settings, films, [&](const std::vector<double>& sums, double d) {
-    writeImages(settings, Renderer::resolve(films[0], sums, d));
+    writeImages(settings, withDirect(Renderer::resolve(films[0], sums, d), direct));
     ++snapshots;
   }, plan, resumed);
   // The first film takes the sum of all levels; the others are reduced as layers.
@@ -203,10 +224,11 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
     for (size_t i = 0; i < films[0].data().size(); ++i) films[0].data()[i] += films[k].data()[i];
   const Gathered g = gatherAfterRender(renderStart, renderer, films[0]);
   if (!session.isRoot()) return;
-  const Image image = Renderer::resolve(films[0], films[0].data(), o.resolveDivisor);
+  const Image image = withDirect(Renderer::resolve(films[0], films[0].data(), o.resolveDivisor), direct);
   std::vector<ImageLayer> out;
   for (size_t k = 0; k < layerSums.size(); ++k)
     out.push_back({"level" + std::to_string(k), Renderer::resolve(films[k], layerSums[k], o.resolveDivisor)});
+  if (layers && !direct.rgb.empty()) out.push_back({"direct", direct});  // the layers still sum to the image
   uint64_t mutations = 0, invalid = 0, nonFinite = 0;
   for (const LevelCounters& c : o.perLevel) {
     mutations += c.smallProposed + c.largeProposed;
@@ -256,14 +278,16 @@ void runRender(const Session& session, RenderSettings settings, CheckpointPlan p
   if (isMarkovChain(settings.integrator)) {
     const auto renderStart = Clock::now();
     int snapshots = 0;
+    const Image direct = directEmission(session, renderer, settings);
     const PssmltOutcome o = runPssmlt(session, renderer, settings, film, [&](const std::vector<double>& sums, double d) {
-      writeImages(settings, Renderer::resolve(film, sums, d));
+      writeImages(settings, withDirect(Renderer::resolve(film, sums, d), direct));
       ++snapshots;
     });
     const Gathered g = gatherAfterRender(renderStart, renderer, film);
     if (!session.isRoot()) return;
     const double area = double(settings.width) * settings.height;
-    const Image image = Renderer::resolve(film, film.data(), pssmltResolveDivisor(o.totalMutations, o.normaliser, area));
+    const Image image =
+        withDirect(Renderer::resolve(film, film.data(), pssmltResolveDivisor(o.totalMutations, o.normaliser, area)), direct);
     const uint64_t mutations = o.counters.smallProposed + o.counters.largeProposed;
     nlohmann::json j = commonStats(settings, session, g, image);
     addMutationRates(j, mutations, g, session.size());

@@ -1,5 +1,7 @@
 #include "path/bdpt.h"
 
+#include <algorithm>
+
 namespace relt {
 namespace {
 
@@ -139,12 +141,13 @@ void Bdpt::trace(const Vec2& film, SampleSource& source, PathSample& out) {
   generateCameraSubpath(film, source, static_cast<size_t>(ctx_.settings.maxDepth) + 1);
   generateLightSubpath(source, static_cast<size_t>(ctx_.settings.maxDepth));
   if (tempering_) out.levelTargets.assign(size_t(tempering_->levels()), 0.0);
-  const int maxDepth = ctx_.settings.maxDepth;
+  const int maxDepth = ctx_.settings.maxDepth, minDepth = std::max(1, ctx_.settings.minDepth);
   for (int t = 1; t <= static_cast<int>(camera_.size()); ++t)
     for (int s = 0; s <= static_cast<int>(light_.size()); ++s) {
       const int segments = s + t - 1;
-      // (1,1) would need the light vertex itself to be seen by the pinhole; (0,2) covers it.
-      if (segments < 1 || segments > maxDepth || (s == 1 && t == 1)) continue;
+      // (1,1) would need the light vertex itself to be seen by the pinhole; (0,2) covers it. All
+      // strategies of a length are kept or left out together, so the MIS weights still sum to 1.
+      if (segments < minDepth || segments > maxDepth || (s == 1 && t == 1)) continue;
       connect(s, t, film, source, out);
     }
 }

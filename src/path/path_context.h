@@ -11,6 +11,8 @@ enum class MisHeuristic : uint8_t { Balance, Power };
 
 struct PathSettings {
   int maxDepth = 8;  // maximum number of path segments
+  // BDPT: paths with fewer segments are left out (2: the directly seen emission is estimated apart).
+  int minDepth = 1;
   MisHeuristic heuristic = MisHeuristic::Power;
   int rrDepth = 2;   // path tracing: Russian roulette from this many segments on (pbrt-v4 convention)
 };

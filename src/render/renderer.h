@@ -3,7 +3,9 @@
 // and the independent-sample integrators (pt, bdpt) over units of work. The distributed layer
 // decides which rank renders which unit; the image depends only on the seed and which units were
 // rendered, never on who rendered them.
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 
 #include "film/film.h"
@@ -29,6 +31,11 @@ class Renderer {
   // One unit of work: sample `sampleIndex` of every pixel of row `row`. Each pixel sample has its
   // own random stream keyed by (seed, pixel, sample index).
   void renderRow(uint64_t sampleIndex, int row, Film& film);
+  // The directly seen emission of row `row` (paths of one segment), `spp` jittered camera rays
+  // per pixel on streams of their own; resolve with divisor spp. Used when settings.directSpp > 0.
+  void renderDirect(int row, int spp, Film& film);
+  // Strata per side for `spp` direct-emission rays per pixel (spp rounded up to a square).
+  static int directStrata(int spp) { return std::max(1, static_cast<int>(std::ceil(std::sqrt(double(spp)) - 1e-9))); }
 
   uint64_t samples() const { return sampleCount_; }
   uint64_t rays() const { return tracer_->rayCount(); }
@@ -49,6 +56,7 @@ class Renderer {
   std::array<SampleSource*, RayTracer::kPacketSize> sourcePointers_{};
   std::array<PathSample, RayTracer::kPacketSize> samples_{};
   uint64_t sampleCount_ = 0;
+  static constexpr uint64_t kDirectStream = 0xd12ec7;  // keeps renderDirect's streams apart
 };
 
 // Applies the scene's defaults to settings left unset (width/height/max depth 0).

@@ -50,6 +50,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"ZeroChains", "render " + kScene + " -o OUT --integrator pssmlt --chains 0", "chains"},
                       BadInvocation{"ZeroChainLength", "render " + kScene + " -o OUT --integrator erpt --chain-length 0", "chain-length"},
                       BadInvocation{"KelemenWeightsWithMmlt", "render " + kScene + " -o OUT --integrator mmlt --kelemen-weights", "pssmlt"},
+                      BadInvocation{"DirectEmissionWithMmlt", "render " + kScene + " -o OUT --integrator mmlt --direct-emission-spp 16", "only for pssmlt and relt"},
+                      BadInvocation{"NegativeDirectEmissionSpp", "render " + kScene + " -o OUT --integrator pssmlt --direct-emission-spp -1", "direct-emission-spp"},
                       BadInvocation{"SmallStepsOutOfOrder", "render " + kScene + " -o OUT --integrator pssmlt --small-step-min 0.1 --small-step-max 0.01", "small-step"},
                       BadInvocation{"LargeStepProbabilityAboveOne", "render " + kScene + " -o OUT --integrator pssmlt --large-step-probability 1.5", "large-step-probability"},
                       BadInvocation{"ErptFilterWithBdpt", "render " + kScene + " -o OUT --erpt-proposal-filter", "only for erpt"},
