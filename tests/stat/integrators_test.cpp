@@ -97,6 +97,15 @@ static void expectAgreementOnCornellBox(Integrator first, Integrator second, int
   expectAgreement(loadGltf(sourcePath("scenes/cornell-box.gltf")), first, second, spp, seeds, tweak);
 }
 
+// The directly seen emission apart (stratified camera rays) plus the chains' longer paths.
+TEST(IntegratorAgreement, PssmltAndReltWithTheDirectEmissionApartAgreeWithBdptOnCornellBox) {
+  const auto apart = [](RenderSettings& s) {
+    if (s.integrator != Integrator::Bdpt) s.directSpp = 16;
+  };
+  expectAgreementOnCornellBox(Integrator::Pssmlt, Integrator::Bdpt, 16, 20, apart);
+  expectAgreementOnCornellBox(Integrator::Relt, Integrator::Bdpt, 16, 20, apart);
+}
+
 TEST(IntegratorAgreement, PtAndBdptAgreeOnCornellBox) {
   expectAgreementOnCornellBox(Integrator::PathTracing, Integrator::Bdpt, 16, 10);
 }

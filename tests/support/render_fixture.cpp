@@ -26,8 +26,31 @@ Scene glossyRing() {
   return scene;
 }
 
+namespace {
+
+// As the executable adds it (mpi/render_driver.cpp): the directly seen emission, every row here.
+Image withDirectEmission(Renderer& renderer, Image image) {
+  const RenderSettings& s = renderer.settings();
+  if (s.directSpp <= 0) return image;
+  Film direct(s.width, s.height);
+  for (int row = 0; row < s.height; ++row) renderer.renderDirect(row, s.directSpp, direct);
+  const Image d = Renderer::resolve(direct, direct.data(), s.directSpp);
+  for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] += d.rgb[i];
+  return image;
+}
+
+Image renderChainsOrSamples(Renderer& renderer);
+
+}  // namespace
+
 Image renderInProcess(Scene scene, RenderSettings settings) {
   Renderer renderer(std::move(scene), settings);
+  return withDirectEmission(renderer, renderChainsOrSamples(renderer));
+}
+
+namespace {
+
+Image renderChainsOrSamples(Renderer& renderer) {
   const RenderSettings& s = renderer.settings();
   Film film(s.width, s.height);
   if (s.integrator == Integrator::Relt) {
@@ -87,6 +110,8 @@ Image renderInProcess(Scene scene, RenderSettings settings) {
     for (int row = 0; row < s.height; ++row) renderer.renderRow(static_cast<uint64_t>(k), row, film);
   return Renderer::resolve(film, film.data(), spp);
 }
+
+}  // namespace
 
 double regionMean(const Image& image, int x0, int y0, int x1, int y1) {
   double sum = 0.0;
