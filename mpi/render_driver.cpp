@@ -101,15 +101,30 @@ struct Gathered {
 
 // pssmlt and relt with --direct-emission-spp: the directly seen emission, rendered apart (row r on
 // rank r mod P, every pixel on its own streams, so the image does not depend on P) and reduced.
-// The root gets the image; other ranks, and runs without the option, an empty one.
-Image directEmission(const Session& session, Renderer& renderer, const RenderSettings& settings) {
-  if (settings.directSpp <= 0) return Image();
+struct DirectEstimate {
+  Image image;           // on the root; empty elsewhere and without the option
+  uint64_t dropped = 0;  // non-finite samples, summed over ranks
+  double seconds = 0.0;  // the slowest rank's time for it, the same on every rank
+};
+DirectEstimate directEmission(const Session& session, Renderer& renderer, const RenderSettings& settings) {
+  DirectEstimate out;
+  if (!directEmissionApart(settings)) return out;
+  const auto start = Clock::now();
   Film film(settings.width, settings.height);
   for (int row = session.rank(); row < settings.height; row += session.size())
     renderer.renderDirect(row, settings.directSpp, film);
   std::vector<double> sums = film.data();
   reduceSumToRoot(sums);
-  return session.isRoot() ? Renderer::resolve(film, sums, settings.directSpp) : Image();
+  out.dropped = allreduceSum(film.droppedSamples());
+  out.seconds = allreduceMax(since(start));
+  if (session.isRoot()) out.image = Renderer::resolve(film, sums, settings.directSpp);
+  return out;
+}
+
+// The chains' settings: a time budget less what the direct estimate took (at least a round runs).
+RenderSettings chainSettings(RenderSettings s, const DirectEstimate& direct) {
+  if (s.seconds) s.seconds = std::max(1e-3, *s.seconds - direct.seconds);
+  return s;
 }
 
 // The chains' image plus the separately estimated directly seen emission (if any).
@@ -208,9 +223,10 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
   std::vector<Film> films;
   const auto renderStart = Clock::now();
   int snapshots = 0;
-  const Image direct = directEmission(session, renderer, settings);
-  const mpi::ReltOutcome o = mpi::runRelt(session, renderer, settings, films, [&](const std::vector<double>& sums, double d) {
-    writeImages(settings, withDirect(Renderer::resolve(films[0], sums, d), direct));
+  const DirectEstimate direct = directEmission(session, renderer, settings);
+  const mpi::ReltOutcome o = mpi::runRelt(session, renderer, chainSettings(settings, direct), films,
+                                          [&](const std::vector<double>& sums, double d) {
+    writeImages(settings, withDirect(Renderer::resolve(films[0], sums, d), direct.image));
     ++snapshots;
   }, plan, resumed);
   // The first film takes the sum of all levels; the others are reduced as layers.
@@ -224,11 +240,11 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
     for (size_t i = 0; i < films[0].data().size(); ++i) films[0].data()[i] += films[k].data()[i];
   const Gathered g = gatherAfterRender(renderStart, renderer, films[0]);
   if (!session.isRoot()) return;
-  const Image image = withDirect(Renderer::resolve(films[0], films[0].data(), o.resolveDivisor), direct);
+  const Image image = withDirect(Renderer::resolve(films[0], films[0].data(), o.resolveDivisor), direct.image);
   std::vector<ImageLayer> out;
   for (size_t k = 0; k < layerSums.size(); ++k)
     out.push_back({"level" + std::to_string(k), Renderer::resolve(films[k], layerSums[k], o.resolveDivisor)});
-  if (layers && !direct.rgb.empty()) out.push_back({"direct", direct});  // the layers still sum to the image
+  if (layers && !direct.image.rgb.empty()) out.push_back({"direct", direct.image});  // the layers still sum to the image
   uint64_t mutations = 0, invalid = 0, nonFinite = 0;
   for (const LevelCounters& c : o.perLevel) {
     mutations += c.smallProposed + c.largeProposed;
@@ -236,7 +252,7 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
     nonFinite += c.nonFinite;
   }
   nlohmann::json j = commonStats(settings, session, g, image);
-  j["nan_inf_samples_dropped"] = nonFinite;
+  j["nan_inf_samples_dropped"] = nonFinite + direct.dropped;
   j["nan_inf_samples_dropped_per_rank"] = counts(o.nonFinitePerRank);
   const uint64_t earlier =
       resumed ? resumed->progress.at("steps_per_chain").get<uint64_t>() * uint64_t(o.ladders * o.levels) : 0;
@@ -278,18 +294,20 @@ void runRender(const Session& session, RenderSettings settings, CheckpointPlan p
   if (isMarkovChain(settings.integrator)) {
     const auto renderStart = Clock::now();
     int snapshots = 0;
-    const Image direct = directEmission(session, renderer, settings);
-    const PssmltOutcome o = runPssmlt(session, renderer, settings, film, [&](const std::vector<double>& sums, double d) {
-      writeImages(settings, withDirect(Renderer::resolve(film, sums, d), direct));
+    const DirectEstimate direct = directEmission(session, renderer, settings);
+    const PssmltOutcome o = runPssmlt(session, renderer, chainSettings(settings, direct), film,
+                                      [&](const std::vector<double>& sums, double d) {
+      writeImages(settings, withDirect(Renderer::resolve(film, sums, d), direct.image));
       ++snapshots;
     });
     const Gathered g = gatherAfterRender(renderStart, renderer, film);
     if (!session.isRoot()) return;
     const double area = double(settings.width) * settings.height;
     const Image image =
-        withDirect(Renderer::resolve(film, film.data(), pssmltResolveDivisor(o.totalMutations, o.normaliser, area)), direct);
+        withDirect(Renderer::resolve(film, film.data(), pssmltResolveDivisor(o.totalMutations, o.normaliser, area)), direct.image);
     const uint64_t mutations = o.counters.smallProposed + o.counters.largeProposed;
     nlohmann::json j = commonStats(settings, session, g, image);
+    j["nan_inf_samples_dropped"] = g.dropped + direct.dropped;
     addMutationRates(j, mutations, g, session.size());
     j["rounds"] = o.rounds;
     j["snapshots"] = snapshots;

@@ -36,7 +36,7 @@ Renderer::Renderer(Scene scene, const RenderSettings& settings) : scene_(std::mo
   PathSettings ps;
   ps.maxDepth = settings_.maxDepth;
   ps.heuristic = settings_.heuristic;
-  if (settings_.directSpp > 0) ps.minDepth = 2;  // renderDirect estimates the rest
+  if (directEmissionApart(settings_)) ps.minDepth = 2;  // renderDirect estimates the rest
   ctx_ = std::make_unique<PathContext>(PathContext{scene_, *tracer_, *lights_, *camera_, ps});
   bdpt_ = std::make_unique<Bdpt>(*ctx_);
   for (size_t i = 0; i < sources_.size(); ++i) sourcePointers_[i] = &sources_[i];

@@ -52,6 +52,10 @@ struct RenderSettings {
 };
 
 const char* integratorName(Integrator i);
+// pssmlt and relt with directSpp > 0: paths of one segment are estimated apart, not by the chains.
+inline bool directEmissionApart(const RenderSettings& s) {
+  return s.directSpp > 0 && (s.integrator == Integrator::Pssmlt || s.integrator == Integrator::Relt);
+}
 // relt's settings with the chain options that apply to every Markov-chain integrator filled in
 // (Kelemen sizes, large-step probability).
 ReplicaSettings effectiveReplicaSettings(const RenderSettings& s);

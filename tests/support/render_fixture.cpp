@@ -31,7 +31,7 @@ namespace {
 // As the executable adds it (mpi/render_driver.cpp): the directly seen emission, every row here.
 Image withDirectEmission(Renderer& renderer, Image image) {
   const RenderSettings& s = renderer.settings();
-  if (s.directSpp <= 0) return image;
+  if (!directEmissionApart(s)) return image;
   Film direct(s.width, s.height);
   for (int row = 0; row < s.height; ++row) renderer.renderDirect(row, s.directSpp, direct);
   const Image d = Renderer::resolve(direct, direct.data(), s.directSpp);
