@@ -46,11 +46,13 @@ void setRay(RTCRay& r, const Vec3& o, const Vec3& d, float tfar) {
 
 // Vectors whose dot products with (p - p0) give the barycentrics (b1, b2) of a point p in the
 // triangle's plane: the dual basis of the edges p1 - p0 and p2 - p0. Zero for a degenerate one.
+// In double: |n|^2 grows with the fourth power of the edges and would leave float's range for
+// edges beyond about 1e9 or below 1e-10 (the loader allows coordinates up to 1e15).
 RayTracer::BarycentricAxes barycentricAxes(const Vec3& p0, const Vec3& p1, const Vec3& p2) {
-  const Vec3 e1 = p1 - p0, e2 = p2 - p0, n = glm::cross(e1, e2);
-  const float n2 = glm::dot(n, n);
-  if (!(n2 > 0.0f)) return {Vec3(0.0f), Vec3(0.0f)};
-  return {glm::cross(e2, n) / n2, glm::cross(n, e1) / n2};
+  const glm::dvec3 e1 = glm::dvec3(p1) - glm::dvec3(p0), e2 = glm::dvec3(p2) - glm::dvec3(p0), n = glm::cross(e1, e2);
+  const double n2 = glm::dot(n, n);
+  if (!(n2 > 0.0)) return {Vec3(0.0f), Vec3(0.0f)};
+  return {Vec3(glm::cross(e2, n) / n2), Vec3(glm::cross(n, e1) / n2)};
 }
 
 }  // namespace

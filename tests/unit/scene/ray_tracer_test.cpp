@@ -87,6 +87,33 @@ TEST(RayTracer, ClosestHitsAndOcclusionMatchBruteForce) {
   }
 }
 
+// Hit points on quads of very large and very small triangles (the loader allows coordinates up to
+// 1e15): the barycentrics, computed from the hit position, stay finite and put the point where
+// the ray meets the plane.
+TEST(RayTracer, HitPointsOnHugeAndTinyQuadsLieOnTheRay) {
+  for (const float size : {1e12f, 1e-8f}) {
+    Scene s;
+    s.positions = {{0, 0, 0}, {size, 0, 0}, {size, size, 0}, {0, size, 0}};
+    s.normals.assign(4, Vec3(0.0f));
+    s.triangles = {{{0, 1, 2}, 0}, {{0, 2, 3}, 0}};
+    s.materials.resize(1);
+    for (const Vec3& p : s.positions) s.bounds.extend(p);
+    const RayTracer tracer(s);
+    Rng rng(3);
+    for (int i = 0; i < 200; ++i) {
+      const Vec3 target(rng.uniform() * size, rng.uniform() * size, 0.0f);
+      const Vec3 origin = target + Vec3(0.3f, -0.2f, 1.0f) * size;
+      const Ray ray{origin, glm::normalize(target - origin), INFINITY};
+      SurfacePoint sp;
+      float dist = 0.0f;
+      ASSERT_TRUE(tracer.intersect(ray, sp, dist)) << size;
+      ASSERT_TRUE(std::isfinite(sp.p.x) && std::isfinite(sp.p.y) && std::isfinite(sp.p.z)) << size;
+      EXPECT_LT(glm::length(sp.p - target), 1e-4f * size) << size;
+      EXPECT_EQ(sp.triangle, target.x >= target.y ? 0u : 1u) << size << " " << target.x << " " << target.y;
+    }
+  }
+}
+
 // Rays Embree would reject (a NaN or infinite component, or one beyond its 1.8e18 limit, in the
 // origin or the direction alone) miss everything instead of tripping Embree's assertion, which
 // ends the process; a shadow ray towards such a point must not trip it either (what it answers
