@@ -272,8 +272,7 @@ int main(int argc, char** argv) {
       throw relt::InputError("", "--mutations-per-pixel", "only for the Markov-chain integrators (pssmlt, mmlt, relt)");
     if (o.render.smallStepMin >= o.render.smallStepMax)
       throw relt::InputError("", "--small-step-min", "must be smaller than --small-step-max");
-    if (o.render.directSpp > 0 && o.render.integrator != relt::Integrator::Pssmlt &&
-        o.render.integrator != relt::Integrator::Relt)
+    if (o.render.directSpp > 0 && !relt::directEmissionApart(o.render))
       throw relt::InputError("", "--direct-emission-spp", "only for pssmlt and relt");
     if (o.render.kelemenWeights && o.render.integrator != relt::Integrator::Pssmlt)
       throw relt::InputError("", "--kelemen-weights", "only for pssmlt");

@@ -97,7 +97,7 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
       const double b = normaliser(&perDepth, nullptr);
       Film merged = film;
       if (mmlt) pool.mergeDepthFilms(mmltDepthWeights(targets, settings.maxDepth, perDepth), merged);
-      std::vector<double> sums = merged.data();
+      std::vector<double> sums = std::move(merged.data());
       reduceSumToRoot(sums);
       if (session.isRoot()) snapshot(sums, pssmltResolveDivisor(schedule.mutationsAfter(rounds), b, area));
     }

@@ -111,8 +111,7 @@ DirectEstimate directEmission(const Session& session, Renderer& renderer, const 
   if (!directEmissionApart(settings)) return out;
   const auto start = Clock::now();
   Film film(settings.width, settings.height);
-  for (int row = session.rank(); row < settings.height; row += session.size())
-    renderer.renderDirect(row, settings.directSpp, film);
+  renderer.renderDirect(session.rank(), session.size(), film);
   std::vector<double> sums = film.data();
   reduceSumToRoot(sums);
   out.dropped = allreduceSum(film.droppedSamples());
@@ -129,8 +128,7 @@ RenderSettings chainSettings(RenderSettings s, const DirectEstimate& direct) {
 
 // The chains' image plus the separately estimated directly seen emission (if any).
 Image withDirect(Image image, const Image& direct) {
-  if (direct.rgb.size() == image.rgb.size())
-    for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] += direct.rgb[i];
+  if (!direct.rgb.empty()) image.add(direct);
   return image;
 }
 

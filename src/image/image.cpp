@@ -27,6 +27,10 @@ double Image::mean() const {
   return rgb.empty() ? 0.0 : sum / static_cast<double>(rgb.size());
 }
 
+void Image::add(const Image& other) {
+  for (size_t i = 0; i < rgb.size() && i < other.rgb.size(); ++i) rgb[i] += other.rgb[i];
+}
+
 std::string temporaryPathFor(const std::string& path) {
   const std::filesystem::path p(path);
   return (p.parent_path() / ("." + p.filename().string() + ".tmp" + std::to_string(::getpid()))).string();

@@ -14,6 +14,7 @@ struct Image {
   Image() = default;
   Image(int w, int h) : width(w), height(h), rgb(size_t(3) * w * h, 0.0f) {}
   double mean() const;  // mean over pixels and channels
+  void add(const Image& other);  // pixel by pixel; same size
 };
 
 // A named extra layer of an EXR (channels NAME.R, NAME.G, NAME.B), e.g. one per replica level.

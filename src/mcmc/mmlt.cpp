@@ -69,15 +69,9 @@ std::vector<double> mmltDepthWeights(const std::vector<double>& targets, int max
 
 MmltChainPlan planMmltChains(const std::vector<double>& targets, int maxDepth, int chains) {
   const size_t depths = static_cast<size_t>(maxDepth);
-  std::vector<double> sum(depths, 0.0), count(depths, 0.0);
-  for (size_t i = 0; i < targets.size(); ++i) {
-    const size_t d = static_cast<size_t>(mmltDepthOfBootstrap(i, maxDepth) - 1);
-    sum[d] += targets[i];
-    count[d] += 1.0;
-  }
-  std::vector<double> share(depths, 0.0);
+  std::vector<double> share = depthNormalisers(targets, maxDepth, {});  // bootstrap means b_d
   double b = 0.0;
-  for (size_t d = 0; d < depths; ++d) b += share[d] = count[d] > 0.0 ? sum[d] / count[d] : 0.0;
+  for (double bd : share) b += bd;
   MmltChainPlan plan;
   const auto lit = static_cast<int>(std::count_if(share.begin(), share.end(), [](double x) { return x > 0.0; }));
   if (!(b > 0.0) || chains < lit) return plan;

@@ -66,28 +66,29 @@ void Renderer::renderRow(uint64_t sampleIndex, int row, Film& film) {
   }
 }
 
-void Renderer::renderDirect(int row, int spp, Film& film) {
+void Renderer::renderDirect(int firstRow, int rowStride, Film& film) {
   PathContext direct = *ctx_;
   direct.settings.minDepth = 1;
   direct.settings.maxDepth = 1;  // pt: the emission where the camera ray lands, nothing after it
   // Stratified: an n x n grid of jittered positions per pixel. The error sits at the emitter's
   // outline, where a pixel is partly covered, and strata shrink it much faster than n^2 random
   // positions would.
-  const int n = directStrata(spp);
+  const int spp = settings_.directSpp, n = directStrata(spp);
   const double weight = double(spp) / double(n * n);  // resolved with divisor spp
   IndependentSource source;
   PathSample sample;
-  for (int x = 0; x < settings_.width; ++x) {
-    const uint64_t pixel = static_cast<uint64_t>(row) * settings_.width + x;
-    for (int k = 0; k < n * n; ++k) {
-      source.reset(hashKey(settings_.seed, kDirectStream, pixel, static_cast<uint64_t>(k)));
-      const Vec2 jitter = source.next2(SampleStream::Camera);
-      const Vec2 cell((k % n + jitter.x) / n, (k / n + jitter.y) / n);
-      sample.clear();
-      tracePath(direct, Vec2(x + cell.x, row + cell.y), source, sample);
-      film.addSample(sample, weight);
+  for (int row = firstRow; row < settings_.height; row += rowStride)
+    for (int x = 0; x < settings_.width; ++x) {
+      const uint64_t pixel = static_cast<uint64_t>(row) * settings_.width + x;
+      for (int k = 0; k < n * n; ++k) {
+        source.reset(hashKey(settings_.seed, kDirectStream, pixel, static_cast<uint64_t>(k)));
+        const Vec2 jitter = source.next2(SampleStream::Camera);
+        const Vec2 cell((k % n + jitter.x) / n, (k / n + jitter.y) / n);
+        sample.clear();
+        tracePath(direct, Vec2(x + cell.x, row + cell.y), source, sample);
+        film.addSample(sample, weight);
+      }
     }
-  }
 }
 
 Image Renderer::resolve(const Film& film, const std::vector<double>& sums, double spp) {

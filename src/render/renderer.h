@@ -31,9 +31,10 @@ class Renderer {
   // One unit of work: sample `sampleIndex` of every pixel of row `row`. Each pixel sample has its
   // own random stream keyed by (seed, pixel, sample index).
   void renderRow(uint64_t sampleIndex, int row, Film& film);
-  // The directly seen emission of row `row` (paths of one segment), `spp` jittered camera rays
-  // per pixel on streams of their own; resolve with divisor spp. Used when settings.directSpp > 0.
-  void renderDirect(int row, int spp, Film& film);
+  // The directly seen emission (paths of one segment) of rows firstRow, firstRow + rowStride, ...:
+  // settings.directSpp stratified camera rays per pixel on streams of their own; resolve with
+  // divisor settings.directSpp.
+  void renderDirect(int firstRow, int rowStride, Film& film);
   // Strata per side for `spp` direct-emission rays per pixel (spp rounded up to a square).
   static int directStrata(int spp) { return std::max(1, static_cast<int>(std::ceil(std::sqrt(double(spp)) - 1e-9))); }
 

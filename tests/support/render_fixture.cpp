@@ -33,9 +33,8 @@ Image withDirectEmission(Renderer& renderer, Image image) {
   const RenderSettings& s = renderer.settings();
   if (!directEmissionApart(s)) return image;
   Film direct(s.width, s.height);
-  for (int row = 0; row < s.height; ++row) renderer.renderDirect(row, s.directSpp, direct);
-  const Image d = Renderer::resolve(direct, direct.data(), s.directSpp);
-  for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] += d.rgb[i];
+  renderer.renderDirect(0, 1, direct);
+  image.add(Renderer::resolve(direct, direct.data(), s.directSpp));
   return image;
 }
 
