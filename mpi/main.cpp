@@ -26,6 +26,8 @@ struct Options {
   std::vector<CLI::Option*> reltOnly;  // options that only relt takes
   std::string infoScene;
   std::string compareA, compareB, compareDiff, comparePng;
+  std::vector<std::string> averageInputs;
+  std::string averageOutput, averagePng;
   double stallTimeout = 120.0;
   relt::mpi::CheckpointPlan checkpoint;
 };
@@ -223,6 +225,11 @@ int main(int argc, char** argv) {
   compare->add_option("reference", o.compareB, "reference image (OpenEXR)")->required();
   compare->add_option("--diff", o.compareDiff, "write the signed difference image - reference (OpenEXR)");
   compare->add_option("--png", o.comparePng, "write |difference| as a PNG (exposure +3)");
+  CLI::App* average =
+      app.add_subcommand("average", "pixel-by-pixel mean of independent renders of one scene (e.g. from separate jobs)");
+  average->add_option("images", o.averageInputs, "renders to average (OpenEXR, same size)")->required();
+  average->add_option("-o,--output", o.averageOutput, "the mean (OpenEXR)")->required();
+  average->add_option("--png", o.averagePng, "also write an sRGB PNG preview");
 
   try {
     app.parse(argc, argv);
@@ -251,6 +258,16 @@ int main(int argc, char** argv) {
           for (float& v : magnitude.rgb) v = std::abs(v);
           relt::writePng(o.comparePng, magnitude, 3.0f);
         }
+      }
+      return 0;
+    }
+    if (*average) {
+      std::vector<relt::Image> images;
+      for (const std::string& path : o.averageInputs) images.push_back(relt::readExr(path));
+      const relt::Image mean = relt::averageImages(images, o.averageInputs);
+      if (root) {
+        relt::writeExr(o.averageOutput, mean);
+        if (!o.averagePng.empty()) relt::writePng(o.averagePng, mean, 0.0f);
       }
       return 0;
     }

@@ -32,4 +32,22 @@ Image signedDifference(const Image& a, const Image& b) {
   return d;
 }
 
+Image averageImages(const std::vector<Image>& images, const std::vector<std::string>& names) {
+  if (images.empty()) throw InputError("", "", "no images to average");
+  const Image& first = images.front();
+  Image mean(first.width, first.height);
+  for (size_t k = 0; k < images.size(); ++k) {
+    const Image& im = images[k];
+    if (im.width != first.width || im.height != first.height)
+      throw InputError(k < names.size() ? names[k] : "", "",
+                       "is " + std::to_string(im.width) + "x" + std::to_string(im.height) + " but " +
+                           (names.empty() ? std::string("the first image") : names.front()) + " is " +
+                           std::to_string(first.width) + "x" + std::to_string(first.height));
+    mean.add(im);
+  }
+  const float scale = 1.0f / float(images.size());
+  for (float& v : mean.rgb) v *= scale;
+  return mean;
+}
+
 }  // namespace relt

@@ -1,6 +1,9 @@
 #pragma once
 // Image differences for convergence studies (`relt compare`, benchmarks): root-mean-square error,
 // relative MSE and the signed difference image.
+#include <string>
+#include <vector>
+
 #include "image/image.h"
 
 namespace relt {
@@ -16,5 +19,9 @@ ImageComparison compareImages(const Image& a, const Image& b, const std::string&
                               const std::string& nameB = "B");
 // a - b per pixel and channel.
 Image signedDifference(const Image& a, const Image& b);
+// The pixel-by-pixel mean of independent renders of one scene (`relt average`): their errors
+// average out like one render of their total time. Throws InputError naming an image whose size
+// differs from the first's.
+Image averageImages(const std::vector<Image>& images, const std::vector<std::string>& names);
 
 }  // namespace relt

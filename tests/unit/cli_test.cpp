@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "image/image.h"
 #include "test_support.h"
 
 using namespace relt::test;
@@ -83,6 +84,8 @@ INSTANTIATE_TEST_SUITE_P(
                                     "render " + sourcePath("tests/data/gltf/invalid/validator/json/invalid_syntax.gltf") +
                                         " -o OUT --spp 1",
                                     "invalid_syntax.gltf"},
+                      BadInvocation{"AverageOfAMissingImage", "average /nonexistent-image.exr -o OUT", "nonexistent-image.exr"},
+                      BadInvocation{"AverageWithoutOutput", "average /nonexistent-image.exr", "output"},
                       BadInvocation{"DracoScene",
                                     "render " + sourcePath("tests/data/gltf/invalid/draco-box/Box.gltf") + " -o OUT",
                                     "KHR_draco_mesh_compression"}),
@@ -125,6 +128,26 @@ TEST(Cli, CompareReportsZeroErrorForAnImageAgainstItselfAndWritesTheDifference) 
   EXPECT_NE(r.output.find("\"rmse\": 0,"), std::string::npos) << r.output;
   EXPECT_TRUE(fileExists(dir + "/d.exr"));
   EXPECT_TRUE(fileExists(dir + "/d.png"));
+}
+
+TEST(Cli, AverageWritesTheMeanOfRendersAndRejectsADifferentSize) {
+  const std::string dir = makeTempDir("average");
+  const std::string render = reltBinary() + " render " + kScene + " --spp 1 --width 16 --height 16 -o " + dir;
+  ASSERT_EQ(runCommand(render + "/a.exr --seed 1").exitCode, 0);
+  ASSERT_EQ(runCommand(render + "/b.exr --seed 2").exitCode, 0);
+  ASSERT_EQ(runCommand(reltBinary() + " render " + kScene + " --spp 1 --width 16 --height 8 -o " + dir + "/small.exr").exitCode, 0);
+  CommandResult r = runCommand(reltBinary() + " average " + dir + "/a.exr " + dir + "/b.exr -o " + dir + "/m.exr --png " + dir + "/m.png");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const relt::Image a = relt::readExr(dir + "/a.exr"), b = relt::readExr(dir + "/b.exr"), m = relt::readExr(dir + "/m.exr");
+  ASSERT_EQ(m.rgb.size(), a.rgb.size());
+  for (size_t i = 0; i < m.rgb.size(); ++i) EXPECT_FLOAT_EQ(m.rgb[i], 0.5f * (a.rgb[i] + b.rgb[i])) << i;
+  EXPECT_TRUE(fileExists(dir + "/m.png"));
+
+  r = runCommand(reltBinary() + " average " + dir + "/a.exr " + dir + "/small.exr -o " + dir + "/bad.exr");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_EQ(lineCount(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("small.exr"), std::string::npos) << r.output;
+  EXPECT_FALSE(fileExists(dir + "/bad.exr"));
 }
 
 TEST(Cli, ReltWritesLadderDiagnosticsToStats) {

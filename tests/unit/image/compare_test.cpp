@@ -1,4 +1,4 @@
-// Image comparison: RMSE and relative MSE against hand-computed values, size mismatch is an error.
+// Image comparison and averaging: RMSE and relative MSE against hand-computed values, pixel means; size mismatch is an error.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -32,4 +32,26 @@ TEST(CompareImages, DifferentSizesAreAnInputErrorNamingBoth) {
     EXPECT_NE(m.find("x.exr"), std::string::npos) << m;
     EXPECT_NE(m.find("ref.exr"), std::string::npos) << m;
   }
+}
+
+TEST(AverageImages, MeanPixelByPixel) {
+  Image a(2, 1), b(2, 1), c(2, 1);
+  a.rgb = {1, 2, 3, 0, 0, 0};
+  b.rgb = {3, 2, 1, 0, 0, 6};
+  c.rgb = {2, 2, 2, 3, 0, 0};
+  EXPECT_EQ(averageImages({a, b, c}, {}).rgb, (std::vector<float>{2, 2, 2, 1, 0, 2}));
+  EXPECT_EQ(averageImages({a}, {}).rgb, a.rgb);
+}
+
+TEST(AverageImages, ASizeDifferentFromTheFirstIsAnInputErrorNamingBoth) {
+  try {
+    averageImages({Image(2, 2), Image(2, 2), Image(2, 3)}, {"a.exr", "b.exr", "c.exr"});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("c.exr"), std::string::npos) << m;
+    EXPECT_NE(m.find("a.exr"), std::string::npos) << m;
+    EXPECT_NE(m.find("2x3"), std::string::npos) << m;
+  }
+  EXPECT_THROW(averageImages({}, {}), InputError);
 }
