@@ -117,6 +117,11 @@ DirectEstimate directEmission(const Session& session, Renderer& renderer, const 
   out.dropped = allreduceSum(film.droppedSamples());
   out.seconds = allreduceMax(since(start));
   if (session.isRoot()) out.image = Renderer::resolve(film, sums, settings.directSpp);
+  // It is not cut short (a part of the image would lack it), so a large N can eat a short budget.
+  if (session.isRoot() && settings.seconds && out.seconds > 0.5 * *settings.seconds)
+    std::fprintf(stderr,
+                 "relt: warning: --direct-emission-spp %d took %.1f s of the %.1f s budget, leaving the chains %.1f s\n",
+                 settings.directSpp, out.seconds, *settings.seconds, std::max(0.0, *settings.seconds - out.seconds));
   return out;
 }
 
@@ -251,6 +256,7 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
   }
   nlohmann::json j = commonStats(settings, session, g, image);
   j["nan_inf_samples_dropped"] = nonFinite + direct.dropped;
+  if (directEmissionApart(settings)) j["direct_emission_seconds"] = direct.seconds;
   j["nan_inf_samples_dropped_per_rank"] = counts(o.nonFinitePerRank);
   const uint64_t earlier =
       resumed ? resumed->progress.at("steps_per_chain").get<uint64_t>() * uint64_t(o.ladders * o.levels) : 0;
@@ -306,6 +312,7 @@ void runRender(const Session& session, RenderSettings settings, CheckpointPlan p
     const uint64_t mutations = o.counters.smallProposed + o.counters.largeProposed;
     nlohmann::json j = commonStats(settings, session, g, image);
     j["nan_inf_samples_dropped"] = g.dropped + direct.dropped;
+    if (directEmissionApart(settings)) j["direct_emission_seconds"] = direct.seconds;
     addMutationRates(j, mutations, g, session.size());
     j["rounds"] = o.rounds;
     j["snapshots"] = snapshots;

@@ -150,6 +150,17 @@ TEST(Cli, AverageWritesTheMeanOfRendersAndRejectsADifferentSize) {
   EXPECT_FALSE(fileExists(dir + "/bad.exr"));
 }
 
+TEST(Cli, ADirectEmissionPassThatTakesMostOfTheBudgetIsReportedAndTimed) {
+  const std::string dir = makeTempDir("direct-budget");
+  const CommandResult r = runCommand(reltBinary() + " render " + kScene + " -o " + dir + "/p.exr --stats " + dir +
+                                     "/p.json --integrator pssmlt --time 0.02 --direct-emission-spp 4096 --width 32 --height 32");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("warning: --direct-emission-spp 4096 took"), std::string::npos) << r.output;
+  std::ifstream stats(dir + "/p.json");
+  const nlohmann::json j = nlohmann::json::parse(stats);
+  EXPECT_GT(j["direct_emission_seconds"].get<double>(), 0.01);
+}
+
 TEST(Cli, ReltWritesLadderDiagnosticsToStats) {
   const std::string dir = makeTempDir("cli-relt");
   const CommandResult r = runCommand(reltBinary() + " render " + kScene + " -o " + dir + "/r.exr --stats " + dir +
