@@ -8,7 +8,9 @@
 # <scene>.png (RMSE against time), and each run's final PNG. Each run keeps its own curve and table
 # row, so a rerun of some configurations (CONFIGS) updates them and keeps the others' results.
 # Usage: scripts/bench/relt_equal_time.sh [SECONDS] [SCENES...]   (defaults 60; glass-cube water-box ring)
-#        env: SNAP (default 5), REF_SECONDS (default 600), CONFIGS (names, default all)
+#        env: SNAP (default 5), REF_SECONDS (default 600), CONFIGS (names, default all), SEED (1),
+#             EXTRA (options added to every configuration, e.g. "--direct-emission-spp 256"),
+#             TAG (results go to out/bench/relt-curves-TAG and relt_equal_time-TAG.md)
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
 source "$ROOT/scripts/bench/snapshots.sh"
@@ -19,7 +21,8 @@ SCENES=("$@")
 SNAP="${SNAP:-5}"
 REF_SECONDS="${REF_SECONDS:-600}"
 REF_DIR="$ROOT/out/bench/equal-time"
-OUT="$ROOT/out/bench/relt-curves"
+OUT="$ROOT/out/bench/relt-curves${TAG:+-$TAG}"
+read -r -a EXTRA_ARGS <<< "${EXTRA:-}"
 mkdir -p "$OUT" "$REF_DIR"
 
 declare -A ARGS=(
@@ -34,9 +37,9 @@ declare -A ARGS=(
 ALL="pssmlt relaxed-deo relaxed-permutation kitaoka-deo kitaoka-permutation tempered-deo tempered-permutation"
 read -r -a NAMES <<< "${CONFIGS:-$ALL}"
 
-TABLE="$ROOT/out/bench/relt_equal_time.md"
+TABLE="$ROOT/out/bench/relt_equal_time${TAG:+-$TAG}.md"
 {
-  echo "Equal time ${BUDGET} s on 2 ranks (seed 1) against ${REF_SECONDS} s bdpt references (seed 99);"
+  echo "Equal time ${BUDGET} s on 2 ranks (seed ${SEED:-1}${EXTRA:+, every configuration with $EXTRA}) against scenes/references (scripts/bench/reference.sh);"
   echo "$(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores, $(date -u +%Y-%m-%d), commit $(git -C "$ROOT" rev-parse --short HEAD)"
   echo
   echo "| scene | configuration | RMSE | relative MSE | mutations | swap acceptance (adjacent pairs) | round trips |"
@@ -52,7 +55,7 @@ for scene in "${SCENES[@]}"; do
   for name in "${NAMES[@]}"; do
     run="$OUT/$scene-$name"
     # shellcheck disable=SC2086
-    render_followed "$run" "$scene" "$BUDGET" "$SNAP" ${ARGS[$name]}
+    render_followed "$run" "$scene" "$BUDGET" "$SNAP" ${ARGS[$name]} "${EXTRA_ARGS[@]}"
     curve "$run" "$ref" "$name"
     read -r rmse rel < <(compare "$run.exr" "$ref")
     /usr/bin/python3 - "$run.json" "$scene" "$name" "$rmse" "$rel" > "$run.row" <<'PY'

@@ -17,7 +17,7 @@ render_followed() {
   local every=()
   [ "$snap" = 0 ] || every=(--snapshot-every "$snap")
   "${MPIRUN[@]}" -np 2 "$BUILD_DIR/relt" render "$ROOT/scenes/$scene.gltf" -o "$run.exr" --png "$run.png" \
-    --stats "$run.json" --time "$budget" "${every[@]}" --seed 1 "$@" 2>/dev/null &
+    --stats "$run.json" --time "$budget" "${every[@]}" --seed "${SEED:-1}" "$@" 2>/dev/null &
   local pid=$! start last="" stamp
   start=$(date +%s.%N)
   while kill -0 "$pid" 2>/dev/null; do
