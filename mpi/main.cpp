@@ -132,7 +132,8 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_flag("--kelemen-weights", r.kelemenWeights,
                "pssmlt: weight splats by Kelemen's balance heuristic between chain and large-step samples");
   cmd.add_option("--direct-emission-spp", r.directSpp,
-                 "pssmlt, relt: estimate the directly seen emission apart with N stratified camera rays per pixel and "
+                 "pssmlt, relt: estimate the directly seen emission apart with N camera rays per pixel (a shifted (0,2)-sequence: "
+                 "powers of two are best) and "
                  "leave the chains the longer paths (0: the chains do it all)")
       ->check(CLI::Range(0, 1 << 20));
   cmd.add_option("--snapshot-every", r.snapshotEvery,

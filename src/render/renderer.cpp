@@ -1,6 +1,7 @@
 #include "render/renderer.h"
 
 #include "core/error.h"
+#include "core/low_discrepancy.h"
 #include "core/memory.h"
 #include "path/path_tracer.h"
 #include "scene/scene_summary.h"
@@ -70,23 +71,23 @@ void Renderer::renderDirect(int firstRow, int rowStride, Film& film) {
   PathContext direct = *ctx_;
   direct.settings.minDepth = 1;
   direct.settings.maxDepth = 1;  // pt: the emission where the camera ray lands, nothing after it
-  // Stratified: an n x n grid of jittered positions per pixel. The error sits at the emitter's
-  // outline, where a pixel is partly covered, and strata shrink it much faster than n^2 random
-  // positions would.
-  const int spp = settings_.directSpp, n = directStrata(spp);
-  const double weight = double(spp) / double(n * n);  // resolved with divisor spp
+  // Positions from a (0,2)-sequence shifted per pixel: the error sits at the emitter's outline,
+  // where a pixel is partly covered, and such points resolve a straight edge there far better
+  // than a jittered grid or random positions (core/low_discrepancy.h).
+  const int spp = settings_.directSpp;
   IndependentSource source;
   PathSample sample;
   for (int row = firstRow; row < settings_.height; row += rowStride)
     for (int x = 0; x < settings_.width; ++x) {
       const uint64_t pixel = static_cast<uint64_t>(row) * settings_.width + x;
-      for (int k = 0; k < n * n; ++k) {
+      Rng shift(hashKey(settings_.seed, kDirectStream, pixel));
+      const uint32_t sx = shift.nextU32(), sy = shift.nextU32();
+      for (int k = 0; k < spp; ++k) {
         source.reset(hashKey(settings_.seed, kDirectStream, pixel, static_cast<uint64_t>(k)));
-        const Vec2 jitter = source.next2(SampleStream::Camera);
-        const Vec2 cell((k % n + jitter.x) / n, (k / n + jitter.y) / n);
+        const Vec2 offset = shiftedSobol02(static_cast<uint32_t>(k), sx, sy);
         sample.clear();
-        tracePath(direct, Vec2(x + cell.x, row + cell.y), source, sample);
-        film.addSample(sample, weight);
+        tracePath(direct, Vec2(x + offset.x, row + offset.y), source, sample);
+        film.addSample(sample);
       }
     }
 }

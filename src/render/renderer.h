@@ -32,11 +32,9 @@ class Renderer {
   // own random stream keyed by (seed, pixel, sample index).
   void renderRow(uint64_t sampleIndex, int row, Film& film);
   // The directly seen emission (paths of one segment) of rows firstRow, firstRow + rowStride, ...:
-  // settings.directSpp stratified camera rays per pixel on streams of their own; resolve with
-  // divisor settings.directSpp.
+  // settings.directSpp camera rays per pixel at positions of a shifted (0,2)-sequence, on streams
+  // of their own; resolve with divisor settings.directSpp.
   void renderDirect(int firstRow, int rowStride, Film& film);
-  // Strata per side for `spp` direct-emission rays per pixel (spp rounded up to a square).
-  static int directStrata(int spp) { return std::max(1, static_cast<int>(std::ceil(std::sqrt(double(spp)) - 1e-9))); }
 
   uint64_t samples() const { return sampleCount_; }
   uint64_t rays() const { return tracer_->rayCount(); }

@@ -45,7 +45,7 @@ struct RenderSettings {
   ReplicaSettings replica;      // relt: family, ladder, exchanges, placement
   double snapshotEvery = 0.0;  // Markov chains: write the image so far every this many seconds (0: never)
   // pssmlt, relt: estimate the directly seen emission (paths of one segment) apart, with this many
-  // stratified camera rays per pixel, and leave the chains the longer paths (0: chains do it all).
+  // camera rays per pixel (a shifted (0,2)-sequence), and leave the chains the longer paths (0: chains do it all).
   int directSpp = 0;
 
   nlohmann::json toJson() const;
