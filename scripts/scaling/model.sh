@@ -8,16 +8,17 @@ set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/lib.sh"
 MPP="${1:-64}"
 RUNS="${RUNS:-3}"
+FIRST="${FIRST:-1}"  # number of the first run; above 1 the summary keeps its earlier rows
 "${MPIRUN[@]}" -np 2 "$BUILD_DIR/relt_bench_collectives" > "$OUT/collectives.jsonl"
 summary="$ROOT/docs/img/scaling-model.md"
-{
+[ "$FIRST" -gt 1 ] || {
   echo "Predicted efficiency at 1,024 ranks, $MPP mutations per pixel on $SCENE, $(date -u +%Y-%m-%d), commit $(git -C "$ROOT" rev-parse --short HEAD)."
   echo "Per run: t_g, its spread and longest group round; the 2 ranks' measured time in collectives; the replay's predicted waiting; then per noise case each protocol (details in scaling-model-K.md)."
   echo
-  echo "| run | group round | measured in collectives | replay waiting | noise | blocking-spread | staggered-spread | sub-communicators | staggered-packed | lagged-packed D=8 | lagged-packed D=32 |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "| run | group round | measured in collectives | replay waiting | noise | blocking-spread | staggered-spread | sub-communicators | staggered-packed | lagged-packed D=8 | lagged-packed D=32 | unlimited lag |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
 } > "$summary"
-for k in $(seq "$RUNS"); do
+for k in $(seq "$FIRST" $((FIRST + RUNS - 1))); do
   "${MPIRUN[@]}" -np 2 "$BUILD_DIR/relt" render "$ROOT/scenes/$SCENE.gltf" -o "$OUT/model.exr" --stats "$OUT/model-$k.json" \
     --integrator relt --mutations-per-pixel "$MPP" --placement spread 2>/dev/null
   /usr/bin/python3 "$ROOT/scripts/scaling/model.py" "$OUT/model-$k.json" "$OUT/collectives.jsonl" \
