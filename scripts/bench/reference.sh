@@ -12,7 +12,7 @@
 #   Markov-chain integrators find them, but one integrator's long run would make a reference that
 #   its own estimator's error shares. So the time is split into two independent halves, pssmlt
 #   (seed 99) and relt (seed 98), both estimating the directly seen emission apart with 4096
-#   stratified rays per pixel, and the reference is their pixel mean (`relt average`). Both are
+#   rays per pixel, and the reference is their pixel mean (`relt average`). Both are
 #   consistent, so their difference is only their error: RMSE(halves) / 2 estimates the reference's
 #   own RMSE (stored as reference_rmse_estimate), and a difference in the means would show a bias.
 # Usage: scripts/bench/reference.sh SCENE [SECONDS] [RANKS]   (defaults 1200 s, 2 ranks)
@@ -34,7 +34,7 @@ trap 'rm -rf "$TMP"' EXIT
 COMMIT="$(git -C "$ROOT" rev-parse --short HEAD)"
 MACHINE="$(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores"
 
-# render NAME ARGS...: one render into $TMP/NAME.exr with its stats; echoes the command as recorded.
+# render NAME ARGS...: one render of the scene into $TMP/NAME.exr, its stats into $TMP/NAME.json.
 render() {
   local name="$1"
   shift

@@ -3,9 +3,7 @@
 // and the independent-sample integrators (pt, bdpt) over units of work. The distributed layer
 // decides which rank renders which unit; the image depends only on the seed and which units were
 // rendered, never on who rendered them.
-#include <algorithm>
 #include <array>
-#include <cmath>
 #include <memory>
 
 #include "film/film.h"
