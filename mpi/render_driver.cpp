@@ -13,6 +13,7 @@
 #include "checkpoint/checkpoint.h"
 #include "checkpoint_io.h"
 #include "core/error.h"
+#include "render/direct_pass.h"
 #include "render/renderer.h"
 #include "erpt_driver.h"
 #include "interrupt.h"
@@ -99,30 +100,40 @@ struct Gathered {
   std::vector<std::string> hosts;  // each rank's processor name
 };
 
-// pssmlt and relt with --direct-emission-spp: the directly seen emission, rendered apart (row r on
-// rank r mod P, every pixel on its own streams, so the image does not depend on P) and reduced.
+// pssmlt and relt: the directly seen emission, rendered apart (row r on rank r mod P, every pixel on
+// its own streams, so the image does not depend on P) and reduced; render/direct_pass.h decides how
+// many rays, and whether at all.
 struct DirectEstimate {
-  Image image;           // on the root; empty elsewhere and without the option
+  Image image;           // on the root; empty elsewhere and without a pass
+  int spp = 0;           // rays per pixel; 0: none (the chains estimate that emission too)
   uint64_t dropped = 0;  // non-finite samples, summed over ranks
   double seconds = 0.0;  // the slowest rank's time for it, the same on every rank
 };
 DirectEstimate directEmission(const Session& session, Renderer& renderer, const RenderSettings& settings) {
   DirectEstimate out;
   if (!directEmissionApart(settings)) return out;
-  const auto start = Clock::now();
   Film film(settings.width, settings.height);
-  renderer.renderDirect(session.rank(), session.size(), film);
+  const RankReduce reduce{[](double v) { return allreduceMax(v); }, [](double v) { return allreduceSum(v); }};
+  const DirectPass pass = renderDirectPass(renderer, session.rank(), session.size(), film, reduce);
   std::vector<double> sums = film.data();
   reduceSumToRoot(sums);
+  out.spp = pass.spp;
   out.dropped = allreduceSum(film.droppedSamples());
-  out.seconds = allreduceMax(since(start));
-  if (session.isRoot()) out.image = Renderer::resolve(film, sums, settings.directSpp);
+  out.seconds = pass.seconds;
+  if (session.isRoot() && pass.spp > 0) out.image = Renderer::resolve(film, sums, pass.spp);
   // It is not cut short (a part of the image would lack it), so a large N can eat a short budget.
   if (session.isRoot() && settings.seconds && out.seconds > 0.5 * *settings.seconds)
     std::fprintf(stderr,
                  "relt: warning: --direct-emission-spp %d took %.1f s of the %.1f s budget, leaving the chains %.1f s\n",
-                 settings.directSpp, out.seconds, *settings.seconds, std::max(0.0, *settings.seconds - out.seconds));
+                 pass.spp, out.seconds, *settings.seconds, std::max(0.0, *settings.seconds - out.seconds));
   return out;
+}
+
+// stats.json: the pass's rays per pixel as taken (0: no emitter in view, the chains did it) and time.
+void addDirectStats(nlohmann::json& j, const RenderSettings& settings, const DirectEstimate& direct) {
+  if (!directEmissionApart(settings)) return;
+  j["direct_emission_spp"] = direct.spp;
+  j["direct_emission_seconds"] = direct.seconds;
 }
 
 // The chains' settings: a time budget less what the direct estimate took (at least a round runs).
@@ -256,7 +267,7 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
   }
   nlohmann::json j = commonStats(settings, session, g, image);
   j["nan_inf_samples_dropped"] = nonFinite + direct.dropped;
-  if (directEmissionApart(settings)) j["direct_emission_seconds"] = direct.seconds;
+  addDirectStats(j, settings, direct);
   j["nan_inf_samples_dropped_per_rank"] = counts(o.nonFinitePerRank);
   const uint64_t earlier =
       resumed ? resumed->progress.at("steps_per_chain").get<uint64_t>() * uint64_t(o.ladders * o.levels) : 0;
@@ -312,7 +323,7 @@ void runRender(const Session& session, RenderSettings settings, CheckpointPlan p
     const uint64_t mutations = o.counters.smallProposed + o.counters.largeProposed;
     nlohmann::json j = commonStats(settings, session, g, image);
     j["nan_inf_samples_dropped"] = g.dropped + direct.dropped;
-    if (directEmissionApart(settings)) j["direct_emission_seconds"] = direct.seconds;
+    addDirectStats(j, settings, direct);
     addMutationRates(j, mutations, g, session.size());
     j["rounds"] = o.rounds;
     j["snapshots"] = snapshots;

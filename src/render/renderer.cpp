@@ -67,14 +67,18 @@ void Renderer::renderRow(uint64_t sampleIndex, int row, Film& film) {
   }
 }
 
-void Renderer::renderDirect(int firstRow, int rowStride, Film& film) {
+void Renderer::keepDirectEmissionInChains() {
+  ctx_->settings.minDepth = 1;
+  settings_.directSpp = 0;
+}
+
+void Renderer::renderDirect(int firstRow, int rowStride, Film& film, uint32_t begin, uint32_t end) {
   PathContext direct = *ctx_;
   direct.settings.minDepth = 1;
   direct.settings.maxDepth = 1;  // pt: the emission where the camera ray lands, nothing after it
   // Positions from a (0,2)-sequence shifted per pixel: the error sits at the emitter's outline,
   // where a pixel is partly covered, and such points resolve a straight edge there far better
   // than a jittered grid or random positions (core/low_discrepancy.h).
-  const int spp = settings_.directSpp;
   IndependentSource source;
   PathSample sample;
   for (int row = firstRow; row < settings_.height; row += rowStride)
@@ -82,9 +86,9 @@ void Renderer::renderDirect(int firstRow, int rowStride, Film& film) {
       const uint64_t pixel = static_cast<uint64_t>(row) * settings_.width + x;
       Rng shift(hashKey(settings_.seed, kDirectStream, pixel));
       const uint32_t sx = shift.nextU32(), sy = shift.nextU32();
-      for (int k = 0; k < spp; ++k) {
+      for (uint32_t k = begin; k < end; ++k) {
         source.reset(hashKey(settings_.seed, kDirectStream, pixel, static_cast<uint64_t>(k)));
-        const Vec2 offset = shiftedSobol02(static_cast<uint32_t>(k), sx, sy);
+        const Vec2 offset = shiftedSobol02(k, sx, sy);
         sample.clear();
         tracePath(direct, Vec2(x + offset.x, row + offset.y), source, sample);
         film.addSample(sample);

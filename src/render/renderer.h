@@ -30,9 +30,13 @@ class Renderer {
   // own random stream keyed by (seed, pixel, sample index).
   void renderRow(uint64_t sampleIndex, int row, Film& film);
   // The directly seen emission (paths of one segment) of rows firstRow, firstRow + rowStride, ...:
-  // settings.directSpp camera rays per pixel at positions of a shifted (0,2)-sequence, on streams
-  // of their own; resolve with divisor settings.directSpp.
-  void renderDirect(int firstRow, int rowStride, Film& film);
+  // camera rays number begin .. end - 1 of every pixel, at the points of a shifted (0,2)-sequence,
+  // on streams of their own; after rays 0 .. N - 1, resolve with divisor N (render/direct_pass.h
+  // decides N).
+  void renderDirect(int firstRow, int rowStride, Film& film, uint32_t begin, uint32_t end);
+  // The direct pass found no emitter in view: the chains estimate the paths of one segment again.
+  // Only before any chain has stepped.
+  void keepDirectEmissionInChains();
 
   uint64_t samples() const { return sampleCount_; }
   uint64_t rays() const { return tracer_->rayCount(); }

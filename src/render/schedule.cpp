@@ -1,8 +1,16 @@
 #include "render/schedule.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace relt {
+
+int autoDirectSpp(double mutationsPerPixel) {
+  const double target = std::max(2.0 * mutationsPerPixel, double(kDirectProbeSpp));
+  const double exponent = std::min(std::round(std::log2(target)), 20.0);  // the option's ceiling, 2^20
+  return 1 << int(exponent);
+}
 
 std::string progressLine(double fraction, double elapsed, double samplesPerSecond, const char* unit) {
   char buf[160];

@@ -20,6 +20,23 @@ inline bool startAnotherPass(int passesDone, double elapsedSeconds, double lastP
   return elapsedSeconds + lastPassSeconds <= budgetSeconds;
 }
 
+// The direct-emission pass of pssmlt and relt left on auto (--direct-emission-spp auto). Its rays
+// sit at the points of a (0,2)-sequence, whose error at an emitter's outline falls faster than
+// 1/N, and each costs about 1/30 of a chain mutation (one camera ray, no connections). Measured at
+// 16 and 64 mutations per pixel, 2M rays per pixel did about as well as 4M and far better than M/4
+// (docs/BENCHMARKS.md, "The direct-emission pass on auto"): about 6 % of the render's time.
+constexpr int kDirectProbeSpp = 16;        // first rays of every pixel; none sees emission: the chains do it all
+constexpr double kDirectBudgetShare = 0.06;  // a timed render's pass stays within this share of the budget
+
+// A fixed budget: the power of two nearest 2 x mutationsPerPixel, at least the probe.
+int autoDirectSpp(double mutationsPerPixel);
+
+// A timed render: the pass has taken passSeconds (the slowest rank) for its rays so far; it doubles
+// them (the doubling costs about as much again) while that keeps it within the budget's share.
+inline bool doubleDirectPass(double passSeconds, double budgetSeconds) {
+  return 2.0 * passSeconds <= kDirectBudgetShare * budgetSeconds;
+}
+
 // "42.0%  3.1 s elapsed  ETA 4.2 s  1.23 M samples/s"
 std::string progressLine(double fraction, double elapsedSeconds, double samplesPerSecond,
                          const char* unit = "samples");

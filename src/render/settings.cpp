@@ -77,7 +77,7 @@ nlohmann::json RenderSettings::toJson() const {
     j["small_step"] = {smallStepMin, smallStepMax};
     if (kelemenWeights) j["kelemen_weights"] = true;
     if (snapshotEvery > 0.0) j["snapshot_every"] = snapshotEvery;
-    if (directSpp > 0) j["direct_emission_spp"] = directSpp;
+    if (directEmissionApart(*this)) j["direct_emission_spp"] = directSpp == kDirectSppAuto ? nlohmann::json("auto") : nlohmann::json(directSpp);
   }
   return j;
 }

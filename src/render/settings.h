@@ -19,6 +19,8 @@ inline bool isMarkovChain(Integrator i) {
   return i == Integrator::Pssmlt || i == Integrator::Mmlt || i == Integrator::Relt;
 }
 
+constexpr int kDirectSppAuto = -1;
+
 struct RenderSettings {
   std::string scenePath;
   std::string output;             // .exr
@@ -45,16 +47,18 @@ struct RenderSettings {
   ReplicaSettings replica;      // relt: family, ladder, exchanges, placement
   double snapshotEvery = 0.0;  // Markov chains: write the image so far every this many seconds (0: never)
   // pssmlt, relt: estimate the directly seen emission (paths of one segment) apart, with this many
-  // camera rays per pixel (a shifted (0,2)-sequence), and leave the chains the longer paths (0: chains do it all).
-  int directSpp = 0;
+  // camera rays per pixel (a shifted (0,2)-sequence), and leave the chains the longer paths (0:
+  // chains do it all; kDirectSppAuto: sized from the budget, dropped when no emitter is in view,
+  // render/direct_pass.h).
+  int directSpp = kDirectSppAuto;
 
   nlohmann::json toJson() const;
 };
 
 const char* integratorName(Integrator i);
-// pssmlt and relt with directSpp > 0: paths of one segment are estimated apart, not by the chains.
+// pssmlt and relt unless directSpp is 0: paths of one segment are estimated apart, not by the chains.
 inline bool directEmissionApart(const RenderSettings& s) {
-  return s.directSpp > 0 && (s.integrator == Integrator::Pssmlt || s.integrator == Integrator::Relt);
+  return s.directSpp != 0 && (s.integrator == Integrator::Pssmlt || s.integrator == Integrator::Relt);
 }
 // relt's settings with the chain options that apply to every Markov-chain integrator filled in
 // (Kelemen sizes, large-step probability).

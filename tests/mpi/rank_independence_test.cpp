@@ -127,7 +127,7 @@ TEST(RankIndependence, ReltTemperedWithRegularisationIsTheSameOnOneAndTwoRanks) 
 TEST(RankIndependence, ReltPerLevelLayersSumToTheImage) {
   const std::string dir = makeTempDir("mpi-relt-layers");
   const Image image =
-      renderWithRanks(2, "relt", dir, "--mutations-per-pixel 4 --ladders 2 --family kitaoka --per-level");
+      renderWithRanks(2, "relt", dir, "--mutations-per-pixel 4 --ladders 2 --family kitaoka --per-level --direct-emission-spp 0");
   const std::string path = dir + "/np2-relt.exr";
   Image sum(image.width, image.height);
   for (int k = 0; k < 4; ++k) {

@@ -5,6 +5,7 @@
 #include "mcmc/erpt.h"
 #include "mcmc/mmlt.h"
 #include "mcmc/pssmlt.h"
+#include "render/direct_pass.h"
 #include "render/renderer.h"
 #include "replica/replica_pool.h"
 #include "replica/round_loop.h"
@@ -28,14 +29,14 @@ Scene glossyRing() {
 
 namespace {
 
-// As the executable adds it (mpi/render_driver.cpp): the directly seen emission, every row here.
-Image withDirectEmission(Renderer& renderer, Image image) {
+// As the executable does it (mpi/render_driver.cpp): the directly seen emission first (every row
+// here), then the chains, which it may hand that emission back to.
+Image directEmission(Renderer& renderer) {
   const RenderSettings& s = renderer.settings();
-  if (!directEmissionApart(s)) return image;
   Film direct(s.width, s.height);
-  renderer.renderDirect(0, 1, direct);
-  image.add(Renderer::resolve(direct, direct.data(), s.directSpp));
-  return image;
+  const RankReduce one{[](double v) { return v; }, [](double v) { return v; }};
+  const DirectPass pass = renderDirectPass(renderer, 0, 1, direct, one);
+  return pass.spp > 0 ? Renderer::resolve(direct, direct.data(), pass.spp) : Image();
 }
 
 Image renderChainsOrSamples(Renderer& renderer);
@@ -44,7 +45,10 @@ Image renderChainsOrSamples(Renderer& renderer);
 
 Image renderInProcess(Scene scene, RenderSettings settings) {
   Renderer renderer(std::move(scene), settings);
-  return withDirectEmission(renderer, renderChainsOrSamples(renderer));
+  const Image direct = directEmission(renderer);
+  Image image = renderChainsOrSamples(renderer);
+  if (!direct.rgb.empty()) image.add(direct);
+  return image;
 }
 
 namespace {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -53,6 +54,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"KelemenWeightsWithMmlt", "render " + kScene + " -o OUT --integrator mmlt --kelemen-weights", "pssmlt"},
                       BadInvocation{"DirectEmissionWithMmlt", "render " + kScene + " -o OUT --integrator mmlt --direct-emission-spp 16", "only for pssmlt and relt"},
                       BadInvocation{"NegativeDirectEmissionSpp", "render " + kScene + " -o OUT --integrator pssmlt --direct-emission-spp -1", "direct-emission-spp"},
+                      BadInvocation{"WordForDirectEmissionSpp", "render " + kScene + " -o OUT --integrator relt --direct-emission-spp often", "direct-emission-spp"},
                       BadInvocation{"SmallStepsOutOfOrder", "render " + kScene + " -o OUT --integrator pssmlt --small-step-min 0.1 --small-step-max 0.01", "small-step"},
                       BadInvocation{"LargeStepProbabilityAboveOne", "render " + kScene + " -o OUT --integrator pssmlt --large-step-probability 1.5", "large-step-probability"},
                       BadInvocation{"ErptFilterWithBdpt", "render " + kScene + " -o OUT --erpt-proposal-filter", "only for erpt"},
@@ -159,6 +161,23 @@ TEST(Cli, ADirectEmissionPassThatTakesMostOfTheBudgetIsReportedAndTimed) {
   std::ifstream stats(dir + "/p.json");
   const nlohmann::json j = nlohmann::json::parse(stats);
   EXPECT_GT(j["direct_emission_seconds"].get<double>(), 0.01);
+}
+
+// By default pssmlt and relt estimate the directly seen emission apart, sized from the budget, and
+// leave it to the chains when no emitter is in view; stats.json says what was taken.
+TEST(Cli, TheDirectEmissionPassIsOnAutoByDefaultAndReported) {
+  const std::string dir = makeTempDir("direct-auto");
+  const std::string dark = sourcePath("scenes/door-ajar.gltf");
+  for (const auto& [scene, name, spp] : {std::tuple{kScene, "lit", 16}, std::tuple{dark, "dark", 0}}) {
+    const CommandResult r = runCommand(reltBinary() + " render " + scene + " -o " + dir + "/" + name + ".exr --stats " +
+                                       dir + "/" + name + ".json --integrator relt --ladders 2 --mutations-per-pixel 2 "
+                                       "--width 16 --height 16");
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream stats(dir + "/" + name + ".json");
+    const nlohmann::json j = nlohmann::json::parse(stats);
+    EXPECT_EQ(j["settings"]["direct_emission_spp"], "auto") << name;
+    EXPECT_EQ(j["direct_emission_spp"], spp) << name << ": 2 x 2 mutations per pixel, raised to the probe's 16";
+  }
 }
 
 TEST(Cli, ReltWritesLadderDiagnosticsToStats) {

@@ -1,0 +1,119 @@
+// The direct-emission pass of pssmlt and relt: its size on auto, the probe that drops it when no
+// emitter is in view, and the doublings of a timed render (render/direct_pass.h, render/schedule.h).
+#include <gtest/gtest.h>
+
+#include <deque>
+
+#include "render/direct_pass.h"
+#include "render/schedule.h"
+#include "scene/gltf_loader.h"
+#include "test_support.h"
+
+using namespace relt;
+
+namespace {
+
+RenderSettings small(int directSpp) {
+  RenderSettings s;
+  s.integrator = Integrator::Pssmlt;
+  s.width = 12;
+  s.height = 10;
+  s.seed = 5;
+  s.directSpp = directSpp;
+  return s;
+}
+
+const RankReduce kOneRank{[](double v) { return v; }, [](double v) { return v; }};
+
+double filmSum(const Film& film) {
+  double sum = 0.0;
+  for (double v : film.data()) sum += v;
+  return sum;
+}
+
+// cornell-box's light is in view; door-ajar's camera sees only what the light through the door reaches.
+Scene withLightInView() { return loadGltf(test::sourcePath("scenes/cornell-box.gltf")); }
+Scene withoutLightInView() { return loadGltf(test::sourcePath("scenes/door-ajar.gltf")); }
+
+}  // namespace
+
+TEST(DirectPassSize, AutoIsTwiceTheMutationsPerPixelAsAPowerOfTwoAndAtLeastTheProbe) {
+  EXPECT_EQ(autoDirectSpp(16), 32);
+  EXPECT_EQ(autoDirectSpp(64), 128);
+  EXPECT_EQ(autoDirectSpp(90), 128);   // 180: nearer 128 than 256 on a log scale
+  EXPECT_EQ(autoDirectSpp(100), 256);  // 200
+  EXPECT_EQ(autoDirectSpp(1), kDirectProbeSpp);
+  EXPECT_EQ(autoDirectSpp(0.001), kDirectProbeSpp);
+  EXPECT_EQ(autoDirectSpp(1e6), 1 << 20);  // the option's ceiling
+}
+
+TEST(DirectPassSize, ATimedPassDoublesOnlyWhileItStaysWithinItsShareOfTheBudget) {
+  EXPECT_TRUE(doubleDirectPass(0.01, 1.0));
+  EXPECT_TRUE(doubleDirectPass(0.5 * kDirectBudgetShare * 10.0, 10.0));
+  EXPECT_FALSE(doubleDirectPass(0.6 * kDirectBudgetShare * 10.0, 10.0));
+}
+
+TEST(DirectPass, RaysInTwoRangesSumToTheSameFilmAsInOne) {
+  Renderer renderer(withLightInView(), small(8));
+  Film whole(12, 10), parts(12, 10);
+  renderer.renderDirect(0, 1, whole, 0, 8);
+  renderer.renderDirect(0, 1, parts, 0, 3);
+  renderer.renderDirect(0, 1, parts, 3, 8);
+  ASSERT_GT(filmSum(whole), 0.0);
+  EXPECT_EQ(whole.data(), parts.data());
+}
+
+TEST(DirectPass, AGivenCountIsTakenAsItIs) {
+  Renderer renderer(withoutLightInView(), small(8));
+  Film film(12, 10);
+  EXPECT_EQ(renderDirectPass(renderer, 0, 1, film, kOneRank).spp, 8);
+  EXPECT_EQ(renderer.context().settings.minDepth, 2) << "asked for: kept even with nothing in view";
+}
+
+TEST(DirectPass, AutoWithAFixedBudgetTakesAutoDirectSpp) {
+  RenderSettings s = small(kDirectSppAuto);
+  s.mutationsPerPixel = 40;
+  Renderer renderer(withLightInView(), s);
+  Film film(12, 10), expected(12, 10);
+  EXPECT_EQ(renderDirectPass(renderer, 0, 1, film, kOneRank).spp, autoDirectSpp(40));
+  EXPECT_EQ(renderer.context().settings.minDepth, 2);
+  renderer.renderDirect(0, 1, expected, 0, uint32_t(autoDirectSpp(40)));
+  EXPECT_EQ(film.data(), expected.data());
+}
+
+TEST(DirectPass, AutoWithNoEmitterInViewHandsThatEmissionBackToTheChains) {
+  Renderer renderer(withoutLightInView(), small(kDirectSppAuto));
+  ASSERT_EQ(renderer.context().settings.minDepth, 2);
+  Film film(12, 10);
+  const DirectPass pass = renderDirectPass(renderer, 0, 1, film, kOneRank);
+  EXPECT_EQ(pass.spp, 0);
+  EXPECT_EQ(renderer.context().settings.minDepth, 1);
+  EXPECT_FALSE(directEmissionApart(renderer.settings()));
+  EXPECT_EQ(filmSum(film), 0.0);
+}
+
+TEST(DirectPass, AutoOnAnotherRankSeeingTheEmitterKeepsThePass) {
+  Renderer renderer(withoutLightInView(), small(kDirectSppAuto));
+  const RankReduce othersSeeIt{[](double v) { return v; }, [](double v) { return v + 1.0; }};
+  Film film(12, 10);
+  EXPECT_EQ(renderDirectPass(renderer, 0, 1, film, othersSeeIt).spp, autoDirectSpp(16));
+  EXPECT_EQ(renderer.context().settings.minDepth, 2);
+}
+
+TEST(DirectPass, AutoWithATimeBudgetDoublesWhileTheSlowestRankStaysWithinTheShare) {
+  RenderSettings s = small(kDirectSppAuto);
+  s.seconds = 100.0;  // share: 6 s; the slowest rank's times after the probe, 32 and 64 rays per pixel:
+  std::deque<double> slowest = {1.0, 2.0, 4.0, 4.0};
+  const RankReduce scripted{[&](double) {
+                              const double t = slowest.front();
+                              slowest.pop_front();
+                              return t;
+                            },
+                            [](double v) { return v; }};
+  Renderer renderer(withLightInView(), s);
+  Film film(12, 10);
+  const DirectPass pass = renderDirectPass(renderer, 0, 1, film, scripted);
+  EXPECT_EQ(pass.spp, 4 * kDirectProbeSpp);  // 2 x 1 and 2 x 2 fit in 6 s, 2 x 4 does not
+  EXPECT_EQ(pass.seconds, 4.0);
+  EXPECT_TRUE(slowest.empty());
+}
