@@ -25,10 +25,11 @@ inline bool startAnotherPass(int passesDone, double elapsedSeconds, double lastP
 // 1/N, and each costs about 1/30 of a chain mutation (one camera ray, no connections). Measured at
 // 16 and 64 mutations per pixel, 2M rays per pixel did about as well as 4M and far better than M/4
 // (docs/BENCHMARKS.md, "The direct-emission pass on auto"): about 6 % of the render's time.
-constexpr int kDirectProbeSpp = 16;        // first rays of every pixel; none sees emission: the chains do it all
+constexpr int kDirectProbeSpp = 4;          // first rays of every pixel; none sees emission: the chains do it all
+constexpr int kDirectMinSpp = 16;           // fewer left emitters' outlines noisier than the chains did
 constexpr double kDirectBudgetShare = 0.06;  // a timed render's pass stays within this share of the budget
 
-// A fixed budget: the power of two nearest 2 x mutationsPerPixel, at least the probe.
+// A fixed budget: the power of two nearest 2 x mutationsPerPixel, at least kDirectMinSpp.
 int autoDirectSpp(double mutationsPerPixel);
 
 // A timed render: the pass has taken passSeconds (the slowest rank) for its rays so far; it doubles

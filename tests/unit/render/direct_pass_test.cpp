@@ -37,13 +37,13 @@ Scene withoutLightInView() { return loadGltf(test::sourcePath("scenes/door-ajar.
 
 }  // namespace
 
-TEST(DirectPassSize, AutoIsTwiceTheMutationsPerPixelAsAPowerOfTwoAndAtLeastTheProbe) {
+TEST(DirectPassSize, AutoIsTwiceTheMutationsPerPixelAsAPowerOfTwoAndAtLeast16) {
   EXPECT_EQ(autoDirectSpp(16), 32);
   EXPECT_EQ(autoDirectSpp(64), 128);
   EXPECT_EQ(autoDirectSpp(90), 128);   // 180: nearer 128 than 256 on a log scale
   EXPECT_EQ(autoDirectSpp(100), 256);  // 200
-  EXPECT_EQ(autoDirectSpp(1), kDirectProbeSpp);
-  EXPECT_EQ(autoDirectSpp(0.001), kDirectProbeSpp);
+  EXPECT_EQ(autoDirectSpp(1), kDirectMinSpp);
+  EXPECT_EQ(autoDirectSpp(0.001), kDirectMinSpp);
   EXPECT_EQ(autoDirectSpp(1e6), 1 << 20);  // the option's ceiling
 }
 
@@ -102,7 +102,7 @@ TEST(DirectPass, AutoOnAnotherRankSeeingTheEmitterKeepsThePass) {
 
 TEST(DirectPass, AutoWithATimeBudgetDoublesWhileTheSlowestRankStaysWithinTheShare) {
   RenderSettings s = small(kDirectSppAuto);
-  s.seconds = 100.0;  // share: 6 s; the slowest rank's times after the probe, 32 and 64 rays per pixel:
+  s.seconds = 100.0;  // share: 6 s; the slowest rank's times after the probe, 2 and 4 probes' rays per pixel:
   std::deque<double> slowest = {1.0, 2.0, 4.0, 4.0};
   const RankReduce scripted{[&](double) {
                               const double t = slowest.front();
