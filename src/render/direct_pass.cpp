@@ -42,7 +42,8 @@ DirectPass renderDirectPass(Renderer& renderer, int firstRow, int rowStride, Fil
   }
   if (fixed > 0) {
     extendTo(uint32_t(std::max(fixed, int(done))));
-  } else {  // a timed auto pass: doublings, each decided on the slowest rank's time
+  } else {  // a timed auto pass: at least kDirectMinSpp, then doublings decided on the slowest rank's time
+    extendTo(uint32_t(kDirectMinSpp));
     while (done < kMaxDirectSpp && doubleDirectPass(reduce.max(secondsSince(start)), *s.seconds)) extendTo(2 * done);
   }
   out.spp = int(done);

@@ -24,8 +24,8 @@ struct DirectPass {
 // (resolve with divisor spp). With --direct-emission-spp auto it first takes kDirectProbeSpp rays
 // per pixel; when no rank's rays saw emission it hands the paths of one segment back to the chains
 // (Renderer::keepDirectEmissionInChains), clears the film and returns spp 0. Then it takes the
-// given N, a fixed budget's autoDirectSpp, or for a timed render doublings while doubleDirectPass
-// allows. Call it before the chains start.
+// given N, a fixed budget's autoDirectSpp, or for a timed render kDirectMinSpp and then
+// doublings while doubleDirectPass allows. Call it before the chains start.
 DirectPass renderDirectPass(Renderer& renderer, int firstRow, int rowStride, Film& film, const RankReduce& reduce);
 
 }  // namespace relt

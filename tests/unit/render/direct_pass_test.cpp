@@ -102,7 +102,7 @@ TEST(DirectPass, AutoOnAnotherRankSeeingTheEmitterKeepsThePass) {
 
 TEST(DirectPass, AutoWithATimeBudgetDoublesWhileTheSlowestRankStaysWithinTheShare) {
   RenderSettings s = small(kDirectSppAuto);
-  s.seconds = 100.0;  // share: 6 s; the slowest rank's times after the probe, 2 and 4 probes' rays per pixel:
+  s.seconds = 100.0;  // share: 6 s; the slowest rank's times at 16, 32 and 64 rays per pixel:
   std::deque<double> slowest = {1.0, 2.0, 4.0, 4.0};
   const RankReduce scripted{[&](double) {
                               const double t = slowest.front();
@@ -113,7 +113,7 @@ TEST(DirectPass, AutoWithATimeBudgetDoublesWhileTheSlowestRankStaysWithinTheShar
   Renderer renderer(withLightInView(), s);
   Film film(12, 10);
   const DirectPass pass = renderDirectPass(renderer, 0, 1, film, scripted);
-  EXPECT_EQ(pass.spp, 4 * kDirectProbeSpp);  // 2 x 1 and 2 x 2 fit in 6 s, 2 x 4 does not
+  EXPECT_EQ(pass.spp, 4 * kDirectMinSpp);  // 2 x 1 and 2 x 2 fit in 6 s, 2 x 4 does not
   EXPECT_EQ(pass.seconds, 4.0);
   EXPECT_TRUE(slowest.empty());
 }
