@@ -30,6 +30,10 @@ round, per protocol:
   lagged-packed D   the same with the sums read back D rounds late (--normaliser-lag D; relt's
                     default above 8 ranks is D = 32): a group waits for its collective of D rounds
                     ago, so a rank may run D rounds ahead
+Render length: efficiency at 1,024 ranks of the default lag (32), of a lag that grows with the
+render (max(32, R / 8) at round R; no protocol of relt yet) and of the unlimited lag, for renders a
+multiple (--lengths) of the measured one, built from independent blocks of 64 group rounds (and,
+to show how much that assumption matters, of 512).
   unlimited lag     the bound of every lagged protocol: ranks never wait for each other before the
                     end (no protocol of relt; the render still ends when the slowest rank does)
 """
@@ -59,6 +63,9 @@ ap.add_argument("--chains-per-rank", type=int, nargs="*")
 ap.add_argument("--seed", type=int, default=1)
 ap.add_argument("--summary", help="append this run's row (1,024 ranks, measured chains per rank) to FILE")
 ap.add_argument("--label", default="")
+ap.add_argument("--lengths", type=int, nargs="*", default=[1, 4, 16],
+                help="render lengths, as multiples of the measured one, for the render-length table")
+ap.add_argument("--length-summary", help="append this run's render-length row (1,024 ranks) to FILE")
 a = ap.parse_args()
 
 j = json.load(open(a.stats))
@@ -134,8 +141,28 @@ def predict(noise, chains_rank):
     return out
 
 
+def by_length(block):
+    """{protocol: [efficiency at 1,024 ranks for each of a.lengths]}, as measured, measured chains per
+    rank: a longer render is a longer run of independent blocks of `block` group rounds."""
+    n0 = min(map(len, traces)) // BLOCK * BLOCK
+    out = {}
+    lags = {"lagged-packed D=32": 32, "growing lag": lambda r: max(32, r // 8), "unlimited lag": None}
+    for x, lag in lags.items():
+        out[x] = []
+        for k in a.lengths:
+            rng = np.random.default_rng(a.seed)
+            sample = round_sim.bootstrap(traces, 1024, groups, block, rng, length=k * n0)
+            eff = round_sim.staggered(sample, groups, lag=sample.shape[1] if lag is None else lag)
+            t_g = float(sample.mean())
+            out[x].append(1.0 / (1.0 / eff + overhead(x, 1024, int(measured_chains), t_g) / t_g))
+    return out
+
+
 replay = round_sim.staggered(np.vstack([t[: min(map(len, traces))] for t in traces]), groups)
 results = {(noise, n): predict(noise, n) for noise in noises for n in counts}
+seconds0 = min(map(len, traces)) // BLOCK * BLOCK * t_g0  # the measured render's stepping time
+lengths = by_length(BLOCK)
+long_blocks = by_length(8 * BLOCK)
 with open(a.out_md, "w") as f:
     f.write("Measured inputs (2 ranks, %s, %d chains per rank, %d levels, interval %d, %d group rounds "
             "traced per rank): stepping a group round t_g = %.3f ms, its spread %.3f ms (%.1f %%), "
@@ -152,6 +179,13 @@ with open(a.out_md, "w") as f:
         f.write("| ranks | " + " | ".join(protocols) + " |\n|---|" + "---|" * len(protocols) + "\n")
         for i, p in enumerate(ps):
             f.write("| %d | " % p + " | ".join("%.1f %%" % (100 * res[x][i]) for x in protocols) + " |\n")
+    f.write("\nRender length (as measured, %d chains per rank, 1,024 ranks; a longer render is a longer "
+            "run of independent blocks of %d group rounds, in brackets of %d; the measured traces "
+            "cover %.1f s of stepping):\n\n" % (measured_chains, BLOCK, 8 * BLOCK, seconds0))
+    f.write("| length | stepping s | " + " | ".join(lengths) + " |\n|---|---|" + "---|" * len(lengths) + "\n")
+    for i, k in enumerate(a.lengths):
+        f.write("| %dx | %.0f | " % (k, k * seconds0) + " | ".join(
+            "%.1f %% (%.1f %%)" % (100 * lengths[x][i], 100 * long_blocks[x][i]) for x in lengths) + " |\n")
 fig, axes = plt.subplots(len(counts), len(noises), figsize=(5.5 * len(noises), 4 * len(counts)), squeeze=False)
 for row, n in enumerate(counts):
     for col, noise in enumerate(noises):
@@ -177,4 +211,9 @@ if a.summary:
                 a.label, t_g0 * 1e3, 100 * sigma0 / t_g0, max(t.max() for t in traces) * 1e3,
                 " / ".join("%.1f %%" % (100 * x) for x in measured_share), 100 * (1 - replay), noise,
                 " | ".join("%.1f %%" % (100 * res[x][at]) for x in protocols)))
+if a.length_summary:
+    with open(a.length_summary, "a") as f:
+        f.write("| %s | %.2f ms, %.0f %%, longest %.0f ms | %.0f s | %s |\n" % (
+            a.label, t_g0 * 1e3, 100 * sigma0 / t_g0, max(t.max() for t in traces) * 1e3, seconds0, " | ".join(
+                " / ".join("%.1f %%" % (100 * v) for v in lengths[x]) for x in lengths)))
 print(open(a.out_md).read())

@@ -18,11 +18,18 @@ summary="$ROOT/docs/img/scaling-model.md"
   echo "| run | group round | measured in collectives | replay waiting | noise | blocking-spread | staggered-spread | sub-communicators | staggered-packed | lagged-packed D=8 | lagged-packed D=32 | unlimited lag |"
   echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
 } > "$summary"
+lengths="$ROOT/docs/img/scaling-model-length.md"
+[ "$FIRST" -gt 1 ] && [ -f "$lengths" ] || {
+  echo "Predicted efficiency at 1,024 ranks against render length (multiples 1 / 4 / 16 of the measured render, as measured, independent blocks of 64 group rounds), $(date -u +%Y-%m-%d), commit $(git -C "$ROOT" rev-parse --short HEAD). Growing lag: max(32, R / 8) at round R, not a protocol of relt yet."
+  echo
+  echo "| run | group round | measured stepping | lagged-packed D=32 | growing lag | unlimited lag |"
+  echo "|---|---|---|---|---|---|"
+} > "$lengths"
 for k in $(seq "$FIRST" $((FIRST + RUNS - 1))); do
   "${MPIRUN[@]}" -np 2 "$BUILD_DIR/relt" render "$ROOT/scenes/$SCENE.gltf" -o "$OUT/model.exr" --stats "$OUT/model-$k.json" \
     --integrator relt --mutations-per-pixel "$MPP" --placement spread 2>/dev/null
   /usr/bin/python3 "$ROOT/scripts/scaling/model.py" "$OUT/model-$k.json" "$OUT/collectives.jsonl" \
     "$ROOT/docs/img/scaling-model-$k.md" "$ROOT/docs/img/scaling-model-$k.png" \
-    --alpha "${ALPHA:-2e-6}" --bandwidth "${BANDWIDTH:-12e9}" --summary "$summary" --label "$k" > /dev/null
+    --alpha "${ALPHA:-2e-6}" --bandwidth "${BANDWIDTH:-12e9}" --summary "$summary" --length-summary "$lengths" --label "$k" > /dev/null
 done
-cat "$summary"
+cat "$summary" "$lengths"

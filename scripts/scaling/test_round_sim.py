@@ -64,6 +64,21 @@ class RoundSim(unittest.TestCase):
         # Independent copies: relative spread shrinks by sqrt 2.
         self.assertAlmostEqual((two.std() / two.mean()) / (one.std() / one.mean()), 2 ** -0.5, delta=0.05)
 
+    def test_a_longer_render_loses_less_to_the_end_spread(self):
+        # Blocks of 64 group rounds run at speed 1 or 1.5 at random: the ranks' totals spread as the
+        # square root of the block count, their mean linearly, so a render 16 times as long loses
+        # about a quarter as much (no per-round barrier: unlimited lag).
+        rng = np.random.default_rng(3)
+        measured = [np.repeat(rng.choice([1.0, 1.5], 64), 64) for _ in range(2)]
+        short = round_sim.bootstrap(measured, 256, 2, 64, rng)
+        long = round_sim.bootstrap(measured, 256, 2, 64, rng, length=16 * 4096)
+        self.assertEqual(short.shape, (256, 4096))
+        self.assertEqual(long.shape, (256, 16 * 4096))
+        loss_short = 1.0 - round_sim.staggered(short, 2, lag=short.shape[1])
+        loss_long = 1.0 - round_sim.staggered(long, 2, lag=long.shape[1])
+        self.assertGreater(loss_short, 0.02)
+        self.assertAlmostEqual(loss_long / loss_short, 0.25, delta=0.1)
+
 
 if __name__ == "__main__":
     unittest.main()
