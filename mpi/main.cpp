@@ -57,6 +57,11 @@ void addReplicaOptions(CLI::App& cmd, Options& o) {
                       "placement a rank may run this many rounds ahead of the slowest)")
            ->check(CLI::Range(1, 1024))
            ->capture_default_str());
+  only(cmd.add_option("--normaliser-lag-growth", r.normaliserLagGrowth,
+                      "relt: the lag grows as rounds / N from --normaliser-lag to 8 times it, so ranks of a long "
+                      "render wait less for slow phases of others (0: a fixed lag)")
+           ->check(CLI::Range(0, 1 << 20))
+           ->capture_default_str());
   only(cmd.add_option("--placement", o.placement,
                       "relt: chains over ranks (spread: chain c on rank c mod P; packed: whole ladders, exchanges decided "
                       "locally; auto: packed above 8 ranks when ladders >= 2 x ranks)")

@@ -20,9 +20,9 @@ summary="$ROOT/docs/img/scaling-model.md"
 } > "$summary"
 lengths="$ROOT/docs/img/scaling-model-length.md"
 [ "$FIRST" -gt 1 ] && [ -f "$lengths" ] || {
-  echo "Predicted efficiency at 1,024 ranks against render length (multiples 1 / 4 / 16 of the measured render, as measured, independent blocks of 64 group rounds), $(date -u +%Y-%m-%d), commit $(git -C "$ROOT" rev-parse --short HEAD). Growing lag: max(32, R / 8) at round R, not a protocol of relt yet."
+  echo "Predicted efficiency at 1,024 ranks against render length (multiples 1 / 4 / 16 of the measured render, as measured, independent blocks of 64 group rounds), $(date -u +%Y-%m-%d), commit $(git -C "$ROOT" rev-parse --short HEAD). Growing lag: max(32, min(256, R / 8)) at round R, relt's default since 2026-12-01 (--normaliser-lag-growth 8)."
   echo
-  echo "| run | group round | measured stepping | lagged-packed D=32 | growing lag | unlimited lag |"
+  echo "| run | group round | measured stepping | lagged-packed D=32 | growing lag (default) | unlimited lag |"
   echo "|---|---|---|---|---|---|"
 } > "$lengths"
 for k in $(seq "$FIRST" $((FIRST + RUNS - 1))); do

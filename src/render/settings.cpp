@@ -65,6 +65,7 @@ nlohmann::json RenderSettings::toJson() const {
       j["exchange"] = exchangeMoveName(r.exchange.move);
       j["exchange_interval"] = r.exchangeInterval;
       j["normaliser_lag"] = r.normaliserLag;
+      j["normaliser_lag_growth"] = r.normaliserLagGrowth;
       j["placement"] = placementName(r.placement);
       j["balance_window"] = r.balanceWindow;
       j["mis_levels"] = r.beta == 1.0 ? "balance" : "power";

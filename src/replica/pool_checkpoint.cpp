@@ -122,7 +122,10 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
       std::vector<PostedRound>& rounds = posted[r].emplace_back();
       epochRead_[size_t(g)] = char(in.u64() != 0);  // the same on every rank
       const uint64_t count = in.u64();
-      if (count > uint64_t(settings_.normaliserLag) || (r > 0 && count != posted[0][size_t(g)].size()))
+      // At most the lag of the round after the last one finished (it may have grown since the start).
+      const uint64_t lag = normaliserLagAt(settings_.normaliserLag, settings_.normaliserLagGrowth,
+                                           steps / uint64_t(settings_.exchangeInterval) + 2);
+      if (count > lag || (r > 0 && count != posted[0][size_t(g)].size()))
         throw std::runtime_error("the checkpoint's pending rounds do not match");
       for (uint64_t i = 0; i < count; ++i) {
         PostedRound& p = rounds.emplace_back(PostedRound{LargeStepSums(m), 0, 0});

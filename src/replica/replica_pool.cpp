@@ -186,9 +186,10 @@ std::vector<double> ReplicaPool::tail(const LargeStepSums& large, double elapsed
   return t;
 }
 
-size_t ReplicaPool::dueReadBacks(int group) const {
+size_t ReplicaPool::dueReadBacks(int group, uint64_t round) const {
   const std::deque<PostedRound>& rounds = posted_[size_t(group)];
-  const size_t n = rounds.size(), lag = size_t(settings_.normaliserLag);
+  const size_t n = rounds.size();
+  const size_t lag = size_t(normaliserLagAt(settings_.normaliserLag, settings_.normaliserLagGrowth, round + 1));
   if (!epochRead_[size_t(group)] && n > 0 && rounds.back().epoch == epoch_) return n;
   return n >= lag ? n - lag + 1 : 0;
 }
@@ -204,7 +205,7 @@ RoundAgreement ReplicaPool::finishRound(int group, const std::vector<std::vector
 
   // The rounds due: held since their messages arrived, or with local decisions just arrived.
   std::deque<std::vector<std::vector<double>>>& held = held_[size_t(group)];
-  const size_t due = dueReadBacks(group);
+  const size_t due = dueReadBacks(group, round);
   if (!localDecisions()) {
     std::vector<std::vector<double>> tails;
     for (const std::vector<double>& msg : messages) tails.push_back(messageTail(msg));

@@ -1,4 +1,6 @@
 #pragma once
+#include <algorithm>
+#include <cstdint>
 // Options of the replica-exchange integrator and where its chains live (DESIGN §4).
 #include <cstdint>
 #include <optional>
@@ -56,6 +58,13 @@ struct AnnealingSettings {
   int mutationsPerLevel = 8;
 };
 
+// The normaliser lag (in rounds) of a group that has posted `postedRounds` rounds: the base lag,
+// growing as postedRounds / growth up to 8 x the base (growth 0: fixed).
+inline uint64_t normaliserLagAt(int lag, int growth, uint64_t postedRounds) {
+  const uint64_t base = uint64_t(lag > 0 ? lag : 1);
+  return growth > 0 ? std::clamp(postedRounds / uint64_t(growth), base, 8 * base) : base;
+}
+
 struct ReplicaSettings {
   FamilySettings family;
   int ladders = 32;
@@ -65,6 +74,13 @@ struct ReplicaSettings {
   // messages of its round R at the end of its round R + lag - 1, so with packed placement a rank
   // may run lag rounds ahead of the slowest before it waits (docs/SCALING.md).
   int normaliserLag = 32;
+  // The lag grows with the render: at round R it is R / normaliserLagGrowth, at least
+  // normaliserLag and at most 8 times that (0: fixed). The ranks move at the pace of whichever is
+  // slowest over the last lag rounds, so a drift of a rank's speed that outlasts the lag costs in
+  // every stretch of the render; a longer lag outlasts more of them, and starting short keeps the
+  // normalisers of short renders fresh (docs/SCALING.md, "Render length"). The cap bounds how late
+  // a stop request is read back.
+  int normaliserLagGrowth = 8;
   Placement placement = Placement::Auto;  // where chains start
   double balanceWindow = 0.25;  // seconds of stepping (slowest rank) between placement decisions (0: never)
   double beta = 1.0;          // MIS over levels: 1 balance, 2 power heuristic

@@ -51,7 +51,7 @@ struct Stepper {
     if (!pool.localDecisions())
       messages = transport.wait(group);
     else
-      for (size_t i = pool.dueReadBacks(group); i > 0; --i) readBacks.push_back(transport.wait(group));
+      for (size_t i = pool.dueReadBacks(group, round); i > 0; --i) readBacks.push_back(transport.wait(group));
     const auto t0 = Clock::now();
     const RoundAgreement agreed = pool.finishRound(group, messages, round, readBacks);
     stopRequested |= agreed.stop;

@@ -62,6 +62,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"ChainsWithRelt", "render " + kScene + " -o OUT --integrator relt --chains 8", "--ladders"},
                       BadInvocation{"ZeroNormaliserLag", "render " + kScene + " -o OUT --integrator relt --normaliser-lag 0", "normaliser-lag"},
                       BadInvocation{"NormaliserLagWithPssmlt", "render " + kScene + " -o OUT --integrator pssmlt --normaliser-lag 2", "only for --integrator relt"},
+                      BadInvocation{"NormaliserLagGrowthWithPssmlt", "render " + kScene + " -o OUT --integrator pssmlt --normaliser-lag-growth 2", "only for --integrator relt"},
                       BadInvocation{"TemperatureMaxWithKitaoka", "render " + kScene + " -o OUT --integrator relt --temperature-max 100", "only for --family tempered"},
                       BadInvocation{"RelaxedEpsWithTempered", "render " + kScene + " -o OUT --integrator relt --family tempered --relaxed-eps 0.1", "only for --family relaxed"},
                       BadInvocation{"LevelsWithKitaoka", "render " + kScene + " -o OUT --integrator relt --family kitaoka --levels 6", "kitaoka"},

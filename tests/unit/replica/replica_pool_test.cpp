@@ -49,7 +49,7 @@ class Collectives {
     std::deque<std::vector<std::vector<double>>>& q = inFlight_[size_t(group)];
     std::vector<std::vector<double>> messages;
     std::vector<std::vector<std::vector<double>>> readBacks;
-    for (size_t i = pools[0]->localDecisions() ? pools[0]->dueReadBacks(group) : 1; i > 0; --i) {
+    for (size_t i = pools[0]->localDecisions() ? pools[0]->dueReadBacks(group, round) : 1; i > 0; --i) {
       (pools[0]->localDecisions() ? readBacks.emplace_back() : messages) = std::move(q.front());
       q.pop_front();
     }
@@ -458,9 +458,44 @@ LoopRun runLoopSized(Fixture& fx, const std::vector<double>& lum, double mpp, co
 // A render continued from its checkpoint is the render that never stopped: two groups staggered
 // (the second's collective pending at the checkpoint), the tempered family with a regularisation
 // that moves the targets (and empties the normalisers' sums) before and after the checkpoint.
+TEST(NormaliserLag, GrowsWithTheRoundFromTheBaseToEightTimesIt) {
+  EXPECT_EQ(normaliserLagAt(32, 8, 1), 32u);
+  EXPECT_EQ(normaliserLagAt(32, 8, 256), 32u);
+  EXPECT_EQ(normaliserLagAt(32, 8, 264), 33u);
+  EXPECT_EQ(normaliserLagAt(32, 8, 2048), 256u);
+  EXPECT_EQ(normaliserLagAt(32, 8, 100000), 256u) << "capped: a stop request is read back within 8 x the base";
+  EXPECT_EQ(normaliserLagAt(32, 0, 8000), 32u) << "0: fixed";
+}
+
+// Both placements read back at the lag of each round: unread rounds are the lag less one.
+TEST(ReplicaPool, AGrowingLagKeepsLagLessOneRoundsUnread) {
+  for (Placement placement : {Placement::Spread, Placement::Packed}) {
+    Fixture fx;
+    fx.settings.placement = placement;
+    fx.settings.normaliserLag = 2;
+    fx.settings.normaliserLagGrowth = 4;
+    const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+    ReplicaPool pool(*fx.eval, fx.settings, 5, lum, 0, 1);
+    std::vector<Film> films(1, Film(16, 12));
+    Collectives c(pool.groups());
+    for (uint64_t r = 0; r < 40; ++r)
+      for (int g = 0; g < pool.groups(); ++g) {
+        pool.runRound(g, 2, films);
+        c.post(g, {pool.roundMessage(g, 0.0, 0.0)});
+        c.finish({&pool}, g, r);
+        ASSERT_EQ(pool.unread(g), normaliserLagAt(2, 4, r + 1) - 1) << placementName(placement) << " round " << r;
+      }
+    EXPECT_EQ(pool.unread(0), 9u) << "lag 10 at round 40";
+    EXPECT_EQ(normaliserLagAt(2, 4, 100), 16u) << "and at most 16 later";
+  }
+}
+
 TEST(ReplicaPool, AResumedRenderIsTheRenderThatNeverStopped) {
-  for (FamilyKind kind : {FamilyKind::Relaxed, FamilyKind::Tempered}) {
+  for (FamilyKind kind : {FamilyKind::Relaxed, FamilyKind::Tempered})
+  for (int lag : {32, 3}) {  // 3: the lag grows from round 32 on (7 at the checkpoint, 15 by round 120)
+    SCOPED_TRACE(lag);
     Fixture fx("scenes/ring.gltf", 40, 30);
+    fx.settings.normaliserLag = lag;
     fx.settings.ladders = 2;
     fx.settings.family.kind = kind;
     fx.settings.family.levels = 4;
