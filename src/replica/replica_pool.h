@@ -69,17 +69,18 @@ class ReplicaPool {
   size_t messageLength(int group, int rank) const;
   // Ends the group's round `round`: exchanges in its ladders (targets from `messages`, every rank's
   // message of this round in rank order, or with local decisions from the hosted chains) and new
-  // level labels; then reads back the group's dueReadBacks(group, round) oldest rounds (spread: held since their
-  // messages arrived; local decisions: `readBacks`, their collectives, oldest first): large-step
-  // sums into the normalisers, and after every balance window a new placement of the group's chains
-  // from the ranks' speeds (moves planned). Returns the largest elapsed time read back so far and
+  // level labels; then reads back the group's dueReadBacks(group, round) oldest rounds (spread:
+  // held since their messages arrived; local decisions: `readBacks`, their collectives, oldest
+  // first): large-step sums into the normalisers, and after every balance window a new placement
+  // of the group's chains from the ranks' speeds (moves planned). Returns the largest elapsed time read back so far and
   // whether a rank asked to stop in the messages read back.
   RoundAgreement finishRound(int group, const std::vector<std::vector<double>>& messages, uint64_t round,
                              const std::vector<std::vector<std::vector<double>>>& readBacks = {});
-  // How many of the group's posted rounds its finishRound of round `round` reads back: the ones
-  // that are at least the lag old (normaliserLagAt: the lag may grow with the round), or, in the first round of the group after the regularisation moved, every one
-  // posted (the normalisers must describe the new targets at once, as with a lag of 1). With local
-  // decisions the loop waits for that many collectives; spread waits for this round's (targets).
+  // How many of the group's posted rounds its finishRound of round `round` reads back: the ones at
+  // least the lag old (normaliserLagAt: the lag may grow with the round), or, in the first round
+  // of the group after the regularisation moved, every one posted (the normalisers must describe
+  // the new targets at once, as with a lag of 1). With local decisions the loop waits for that
+  // many collectives; spread waits for this round's (targets).
   size_t dueReadBacks(int group, uint64_t round) const;
   // Rounds of the group posted and not read back yet (lag - 1 between rounds once running), and
   // read back so far by this pool (since it was made or restored).

@@ -1,7 +1,6 @@
 #pragma once
-#include <algorithm>
-#include <cstdint>
 // Options of the replica-exchange integrator and where its chains live (DESIGN §4).
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string_view>
