@@ -72,8 +72,8 @@ class ReplicaPool {
   // level labels; then reads back the group's dueReadBacks(group, round) oldest rounds (spread:
   // held since their messages arrived; local decisions: `readBacks`, their collectives, oldest
   // first): large-step sums into the normalisers, and after every balance window a new placement
-  // of the group's chains from the ranks' speeds (moves planned). Returns the largest elapsed time read back so far and
-  // whether a rank asked to stop in the messages read back.
+  // of the group's chains from the ranks' speeds (moves planned). Returns the largest elapsed time
+  // read back so far and whether a rank asked to stop in the messages read back.
   RoundAgreement finishRound(int group, const std::vector<std::vector<double>>& messages, uint64_t round,
                              const std::vector<std::vector<std::vector<double>>>& readBacks = {});
   // How many of the group's posted rounds its finishRound of round `round` reads back: the ones at
