@@ -8,6 +8,7 @@
 #include "interrupt.h"
 #include "core/error.h"
 #include "image/compare.h"
+#include "render/schedule.h"
 #include "render_driver.h"
 #include "replica/permutation.h"
 #include "scene/gltf_loader.h"
@@ -142,7 +143,7 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
                  "(0,2)-sequence: powers of two are best) and leave the chains the longer paths (0: the chains do it all; "
                  "auto: about 6 % of the budget, 2 x mutations per pixel rounded to a power of two, none when no emitter "
                  "is in view)")
-      ->check(CLI::IsMember({"auto"}) | CLI::Range(0, 1 << 20))
+      ->check(CLI::IsMember({"auto"}) | CLI::Range(0, relt::kDirectMaxSpp))
       ->capture_default_str();
   cmd.add_option("--snapshot-every", r.snapshotEvery,
                  "pssmlt, mmlt: write the image so far (atomically) every this many seconds")

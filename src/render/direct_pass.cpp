@@ -9,8 +9,6 @@ namespace relt {
 
 namespace {
 
-constexpr uint32_t kMaxDirectSpp = 1u << 20;  // --direct-emission-spp's ceiling
-
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -44,7 +42,7 @@ DirectPass renderDirectPass(Renderer& renderer, int firstRow, int rowStride, Fil
     extendTo(uint32_t(std::max(fixed, int(done))));
   } else {  // a timed auto pass: at least kDirectMinSpp, then doublings decided on the slowest rank's time
     extendTo(uint32_t(kDirectMinSpp));
-    while (done < kMaxDirectSpp && doubleDirectPass(reduce.max(secondsSince(start)), *s.seconds)) extendTo(2 * done);
+    while (done < uint32_t(kDirectMaxSpp) && doubleDirectPass(reduce.max(secondsSince(start)), *s.seconds)) extendTo(2 * done);
   }
   out.spp = int(done);
   out.seconds = reduce.max(secondsSince(start));

@@ -8,7 +8,7 @@ namespace relt {
 
 int autoDirectSpp(double mutationsPerPixel) {
   const double target = std::max(2.0 * mutationsPerPixel, double(kDirectMinSpp));
-  const double exponent = std::min(std::round(std::log2(target)), 20.0);  // the option's ceiling, 2^20
+  const double exponent = std::min(std::round(std::log2(target)), std::log2(double(kDirectMaxSpp)));
   return 1 << int(exponent);
 }
 

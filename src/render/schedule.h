@@ -27,6 +27,7 @@ inline bool startAnotherPass(int passesDone, double elapsedSeconds, double lastP
 // (docs/BENCHMARKS.md, "The direct-emission pass on auto"): about 6 % of the render's time.
 constexpr int kDirectProbeSpp = 4;          // first rays of every pixel; none sees emission: the chains do it all
 constexpr int kDirectMinSpp = 16;           // fewer left emitters' outlines noisier than the chains did
+constexpr int kDirectMaxSpp = 1 << 20;      // --direct-emission-spp's ceiling
 constexpr double kDirectBudgetShare = 0.06;  // a timed render's pass stays within this share of the budget
 
 // A fixed budget: the power of two nearest 2 x mutationsPerPixel, at least kDirectMinSpp.
