@@ -88,6 +88,7 @@ big = max(coll, key=lambda c: c["doubles_per_rank"])
 copy_bw = big["doubles_per_rank"] * 8 * big["ranks"] / big["allgatherv_seconds"]  # bytes/s, this machine
 counts = a.chains_per_rank or [int(measured_chains), int(2 * measured_chains)]
 BLOCK = 64 * groups
+n_measured = min(map(len, traces)) // BLOCK * BLOCK  # group rounds per rank the bootstrap keeps
 
 median = float(np.median(np.concatenate(traces)))
 clipped = [np.minimum(t, 3 * median) for t in traces]
@@ -146,23 +147,20 @@ def predict(noise, chains_rank):
 def by_length(block):
     """{protocol: [efficiency at 1,024 ranks for each of a.lengths]}, as measured, measured chains per
     rank: a longer render is a longer run of independent blocks of `block` group rounds."""
-    n0 = min(map(len, traces)) // BLOCK * BLOCK
-    out = {}
     lags = {"lagged-packed D=32": 32, "growing lag (default)": lambda r: max(32, min(256, r // 8)), "unlimited lag": None}
-    for x, lag in lags.items():
-        out[x] = []
-        for k in a.lengths:
-            rng = np.random.default_rng(a.seed)
-            sample = round_sim.bootstrap(traces, 1024, groups, block, rng, length=k * n0)
+    out = {x: [] for x in lags}
+    for k in a.lengths:
+        sample = round_sim.bootstrap(traces, 1024, groups, block, np.random.default_rng(a.seed), length=k * n_measured)
+        t_g = float(sample.mean())
+        for x, lag in lags.items():
             eff = round_sim.staggered(sample, groups, lag=sample.shape[1] if lag is None else lag)
-            t_g = float(sample.mean())
             out[x].append(1.0 / (1.0 / eff + overhead(x, 1024, int(measured_chains), t_g) / t_g))
     return out
 
 
 replay = round_sim.staggered(np.vstack([t[: min(map(len, traces))] for t in traces]), groups)
 results = {(noise, n): predict(noise, n) for noise in noises for n in counts}
-seconds0 = min(map(len, traces)) // BLOCK * BLOCK * t_g0  # the measured render's stepping time
+seconds0 = n_measured * t_g0  # the measured render's stepping time
 lengths = by_length(BLOCK)
 long_blocks = by_length(8 * BLOCK)
 with open(a.out_md, "w") as f:
