@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "mcmc/round_schedule.h"
+#include "render/pace.h"
 #include "render/schedule.h"
 
 namespace relt::mpi {
@@ -24,9 +25,10 @@ int runPasses(const Session& session, const RenderSettings& settings,
   const int spp = settings.spp.value_or(timed ? 0 : 16);
   const bool tty = ::isatty(STDERR_FILENO);
   const bool snapshots = snapshot && settings.snapshotEvery > 0.0;
-  double lastElapsed = start.elapsed, lastPass = 0.0, lastPrint = start.elapsed, lastSnapshot = start.elapsed;
+  Pace pace;  // the passes' agreed durations: one that spanned a stall does not end the render early
+  double lastElapsed = start.elapsed, lastPrint = start.elapsed, lastSnapshot = start.elapsed;
   int passes = start.passes;
-  auto another = [&] { return timed ? startAnotherPass(passes, lastElapsed, lastPass, *settings.seconds) : passes < spp; };
+  auto another = [&] { return timed ? startAnotherPass(passes, lastElapsed, pace.typical(), *settings.seconds) : passes < spp; };
   if (!another()) return passes;
   for (;;) {
     for (int row = 0; row < height; ++row)
@@ -37,7 +39,7 @@ int runPasses(const Session& session, const RenderSettings& settings,
     // snapshots and checkpoints after the same passes.
     const Agreement agreed = agree(since());
     const double elapsed = agreed.elapsed;
-    lastPass = elapsed - lastElapsed;
+    pace.add(elapsed - lastElapsed);
     lastElapsed = elapsed;
     const bool more = !agreed.stop && another();
     if (snapshots && snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more)) {

@@ -8,6 +8,7 @@
 
 #include "mcmc/chain_pool.h"
 #include "mcmc/round_schedule.h"
+#include "render/pace.h"
 #include "render/schedule.h"
 
 namespace relt::mpi {
@@ -31,6 +32,7 @@ ChainCounters sumOverRanks(const ChainCounters& c) {
 
 PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
                         const SnapshotWriter& snapshot) {
+  const auto start = Clock::now();  // a time budget counts the bootstrap too
   PssmltSettings ps;
   ps.mutationsPerPixel = settings.mutationsPerPixel.value_or(16.0);
   ps.chains = settings.chains;
@@ -71,18 +73,18 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
                 : pooledNormaliser(bootstrapSum, targets.size(), counters);
   };
 
-  const auto start = Clock::now();
-  double elapsed = 0.0, lastRound = 0.0, lastSnapshot = 0.0, lastPrint = 0.0;
+  Pace pace;  // the rounds' agreed durations: one that spanned a stall does not end the render early
+  double elapsed = allreduceMax(since(start)), lastSnapshot = 0.0, lastPrint = 0.0;
   const bool tty = ::isatty(STDERR_FILENO);
   uint64_t rounds = 0;
   for (;;) {
-    if (!anyChains || !schedule.anotherRound(rounds, elapsed, lastRound)) break;
+    if (!anyChains || !schedule.anotherRound(rounds, elapsed, pace.typical())) break;
     std::vector<uint64_t> steps;
     for (int c : mine) steps.push_back(schedule.doneAfter(rounds + 1, c) - schedule.doneAfter(rounds, c));
     if (pool.size() > 0) pool.run(steps, film);
     ++rounds;
     const Agreement agreed = agree(since(start));
-    lastRound = agreed.elapsed - elapsed;
+    pace.add(agreed.elapsed - elapsed);
     elapsed = agreed.elapsed;
     if (agreed.stop) break;
     if (session.isRoot() && elapsed - lastPrint >= 1.0) {
@@ -91,7 +93,7 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
       std::fprintf(stderr, tty ? "\r%s" : "%s\n",
                    progressLine(schedule.fraction(rounds, elapsed), elapsed, rate, "mutations").c_str());
     }
-    if (snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, schedule.anotherRound(rounds, elapsed, lastRound))) {
+    if (snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, schedule.anotherRound(rounds, elapsed, pace.typical()))) {
       lastSnapshot = elapsed;
       std::vector<ChainCounters> perDepth;
       const double b = normaliser(&perDepth, nullptr);

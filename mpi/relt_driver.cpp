@@ -123,6 +123,8 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
     resumed.elapsed = checkpoint->progress.at("elapsed").get<double>();
     schedule.resumeAt(resumed.rounds, pool.stepsPerChain());
   }
+  // A time budget counts the bootstrap (and a resumed render's repeat of it) too.
+  resumed.elapsed += allreduceMax(since(bootstrapStart));
   const double collectiveBefore = collectiveSeconds();
   const auto start = Clock::now();
   double lastSnapshot = resumed.elapsed, lastPrint = resumed.elapsed, lastCheckpoint = resumed.elapsed;

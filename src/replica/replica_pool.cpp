@@ -209,6 +209,11 @@ RoundAgreement ReplicaPool::finishRound(int group, const std::vector<std::vector
   if (!localDecisions()) {
     std::vector<std::vector<double>> tails;
     for (const std::vector<double>& msg : messages) tails.push_back(messageTail(msg));
+    agreed.fresh = true;
+    for (const std::vector<double>& t : tails) {
+      agreed.elapsed = std::max(agreed.elapsed, t[t.size() - 1]);
+      agreed.stop |= t[t.size() - 2] > 0.0;
+    }
     held.push_back(std::move(tails));
     for (size_t i = 0; i < due; ++i) {
       readBack(group, held.front(), agreed);

@@ -35,6 +35,10 @@ std::vector<double> bootstrapFeatures(PssEvaluator& eval, const FamilySettings& 
 struct RoundAgreement {
   double elapsed = 0.0;  // the largest elapsed time
   bool stop = false;     // some rank was asked to stop
+  // Spread placement: elapsed and stop are those of this round's messages (every rank waits for
+  // them anyway), not of the round read back lag rounds ago. Neither changes the image: a stop or
+  // a time budget ends the render at a round that depends on timing in any case.
+  bool fresh = false;
 };
 
 class ReplicaPool {

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <cmath>
 
+#include "render/pace.h"
+
 namespace relt {
 namespace {
 
@@ -41,9 +43,9 @@ struct Stepper {
     transport.post(group, pool.roundMessage(group, hooks.elapsed(), seconds, stop), lengths[size_t(group)]);
   }
   // Completes a group's collective for round `round`: exchanges, normalisers, chain moves.
-  // Returns the agreed elapsed time; a stop request of any group's round is remembered (every rank
-  // reads the same messages in the same order, so all see it at the same point).
-  double finish(int group, uint64_t round) {
+  // Returns the agreement; a stop request of any group's round is remembered (every rank reads the
+  // same messages in the same order, so all see it at the same point).
+  RoundAgreement finish(int group, uint64_t round) {
     // Spread: this round's messages (its exchanges need the targets); local decisions: the
     // collectives of the rounds whose sums are due.
     std::vector<std::vector<double>> messages;
@@ -55,14 +57,38 @@ struct Stepper {
     const auto t0 = Clock::now();
     const RoundAgreement agreed = pool.finishRound(group, messages, round, readBacks);
     stopRequested |= agreed.stop;
-    const double elapsed = agreed.elapsed;
     finishes += 1.0;
     finishSum += std::chrono::duration<double>(Clock::now() - t0).count();
     if (!pool.plannedMoves().empty()) {
       transport.migrate(pool);
       measureLengths();
     }
-    return elapsed;
+    return agreed;
+  }
+};
+
+// The agreed elapsed time after each of group 0's rounds. Spread placement reads it from the
+// round's own messages. With local decisions the latest time comes back lag rounds late and is
+// carried over the rounds not read back yet by the typical duration of a round (Pace: a round that
+// spanned a stall neither ends a time budget early nor stays in the estimate).
+struct AgreedClock {
+  double at = 0.0;  // the latest agreed time
+  uint64_t readAt = 0;
+  Pace pace;
+
+  double update(const RoundAgreement& agreed, uint64_t read, size_t unread) {
+    if (agreed.fresh) {
+      if (agreed.elapsed > at) pace.add(agreed.elapsed - at);
+      at = std::max(at, agreed.elapsed);
+      return at;
+    }
+    // Rounds restored from a checkpoint carry no newer time: they only move the count on.
+    if (read > readAt && agreed.elapsed > at) {
+      pace.add(agreed.elapsed - at, size_t(read - readAt));
+      at = agreed.elapsed;
+    }
+    readAt = std::max(readAt, read);
+    return at + pace.typical() * double(unread);
   }
 };
 
@@ -89,28 +115,17 @@ RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule,
     s.stepAndPost(0, start.rounds);
     first = 1;
   }
-  // The agreed time: the latest elapsed time read back, and the duration of a round from the last
-  // two read back (the same on every rank), which carries it over the rounds not read back yet.
-  double perRound = start.secondsPerRound, agreedAt = start.elapsed;
-  uint64_t readAt = pool.roundsReadBack(0);
+  AgreedClock clock{start.elapsed, pool.roundsReadBack(0)};
+  if (start.secondsPerRound > 0.0) clock.pace.add(start.secondsPerRound);  // until rounds are timed
   for (;;) {
     for (int g = first; g < groups; ++g) {
       // Group 0 finishes the round it just stepped; the others the round before (still pending).
-      const double agreed = s.finish(g, g == 0 ? out.rounds : out.rounds - 1);
+      const RoundAgreement agreed = s.finish(g, g == 0 ? out.rounds : out.rounds - 1);
       if (g == 0) {
         ++out.rounds;
-        const uint64_t read = pool.roundsReadBack(0);
-        if (read > readAt) {
-          // Rounds restored from a checkpoint carry no newer time: they only move the count on.
-          if (agreed > agreedAt) {
-            perRound = (agreed - agreedAt) / double(read - readAt);
-            agreedAt = agreed;
-          }
-          readAt = read;
-        }
-        out.elapsed = std::max(out.elapsed, agreedAt + perRound * double(pool.unread(0)));
+        out.elapsed = clock.update(agreed, pool.roundsReadBack(0), pool.unread(0));
         out.stopped = s.stopRequested;
-        const bool more = !s.stopRequested && schedule.anotherRound(out.rounds, out.elapsed, perRound);
+        const bool more = !s.stopRequested && schedule.anotherRound(out.rounds, out.elapsed, clock.pace.typical());
         if (hooks.roundDone) hooks.roundDone(out.rounds, out.elapsed, more);
         if (!more) {
           for (int h = 1; h < groups; ++h) s.finish(h, out.rounds - 1);
