@@ -113,7 +113,8 @@ DirectEstimate directEmission(const Session& session, Renderer& renderer, const 
   DirectEstimate out;
   if (!directEmissionApart(settings)) return out;
   Film film(settings.width, settings.height);
-  const RankReduce reduce{[](double v) { return allreduceMax(v); }, [](double v) { return allreduceSum(v); }};
+  const RankReduce reduce{[](double v) { return allreduceMax(v); }, [](double v) { return allreduceSum(v); },
+                          [] { return stopSignalled(); }};
   const DirectPass pass = renderDirectPass(renderer, session.rank(), session.size(), film, reduce);
   std::vector<double> sums = film.data();
   reduceSumToRoot(sums);

@@ -13,6 +13,42 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// Extends the pass over rays [done, end) of every pixel, when a rank may be asked to stop in
+// chunks, agreeing on a stop request after each. A chunk's size follows the slowest rank's time for
+// the last one; the film does not depend on it (rays in two ranges sum to the film of one).
+struct ChunkedPass {
+  Renderer& renderer;
+  int firstRow, rowStride;
+  Film& film;
+  const RankReduce& reduce;
+  uint32_t done = 0, chunk = uint32_t(kDirectProbeSpp);
+  bool stopped = false;
+
+  bool extendTo(uint32_t end) {
+    while (done < end && !stopped) {
+      const uint32_t next = reduce.stop ? std::min(end, done + chunk) : end;
+      const auto t0 = std::chrono::steady_clock::now();
+      renderer.renderDirect(firstRow, rowStride, film, done, next);
+      const uint32_t taken = next - done;
+      done = next;
+      if (!reduce.stop) break;
+      chunk = nextDirectChunk(taken, reduce.max(secondsSince(t0)));
+      stopped = reduce.max(reduce.stop() ? 1.0 : 0.0) > 0.0;
+    }
+    return !stopped;
+  }
+};
+
+// Whether any rank's probe rays saw emission (a NaN sum was dropped by the film).
+bool probeSeesEmission(Renderer& renderer, int firstRow, int rowStride, const RankReduce& reduce) {
+  const RenderSettings& s = renderer.settings();
+  Film probe(s.width, s.height);
+  renderer.renderDirect(firstRow, rowStride, probe, 0, uint32_t(kDirectProbeSpp), true);
+  double seen = 0.0;
+  for (double v : probe.data()) seen += v;
+  return reduce.sum(seen) > 0.0;
+}
+
 }  // namespace
 
 DirectPass renderDirectPass(Renderer& renderer, int firstRow, int rowStride, Film& film, const RankReduce& reduce) {
@@ -22,29 +58,22 @@ DirectPass renderDirectPass(Renderer& renderer, int firstRow, int rowStride, Fil
   const auto start = std::chrono::steady_clock::now();
   const bool automatic = s.directSpp == kDirectSppAuto;
   const int fixed = !automatic ? s.directSpp : s.seconds ? 0 : autoDirectSpp(s.mutationsPerPixel.value_or(16.0));
-  uint32_t done = 0;
-  auto extendTo = [&](uint32_t end) {
-    renderer.renderDirect(firstRow, rowStride, film, done, end);
-    done = end;
-  };
-  if (automatic) {
-    extendTo(uint32_t(kDirectProbeSpp));
-    double seen = 0.0;
-    for (double v : film.data()) seen += v;
-    if (!(reduce.sum(seen) > 0.0)) {  // no emitter in view (a NaN sum was dropped by the film)
-      renderer.keepDirectEmissionInChains();
-      film = Film(s.width, s.height);
-      out.seconds = reduce.max(secondsSince(start));
-      return out;
+  if (automatic && !probeSeesEmission(renderer, firstRow, rowStride, reduce)) {  // no emitter in view
+    renderer.keepDirectEmissionInChains();
+    out.seconds = reduce.max(secondsSince(start));
+    return out;
+  }
+  ChunkedPass pass{renderer, firstRow, rowStride, film, reduce};
+  if (fixed > 0) {
+    pass.extendTo(uint32_t(fixed));
+  } else if (pass.extendTo(uint32_t(kDirectMinSpp))) {
+    // A timed auto pass: doublings decided on the slowest rank's time.
+    while (pass.done < uint32_t(kDirectMaxSpp) && doubleDirectPass(reduce.max(secondsSince(start)), *s.seconds) &&
+           pass.extendTo(2 * pass.done)) {
     }
   }
-  if (fixed > 0) {
-    extendTo(uint32_t(std::max(fixed, int(done))));
-  } else {  // a timed auto pass: at least kDirectMinSpp, then doublings decided on the slowest rank's time
-    extendTo(uint32_t(kDirectMinSpp));
-    while (done < uint32_t(kDirectMaxSpp) && doubleDirectPass(reduce.max(secondsSince(start)), *s.seconds)) extendTo(2 * done);
-  }
-  out.spp = int(done);
+  out.spp = int(pass.done);
+  out.stopped = pass.stopped;
   out.seconds = reduce.max(secondsSince(start));
   return out;
 }

@@ -72,7 +72,8 @@ void Renderer::keepDirectEmissionInChains() {
   settings_.directSpp = 0;
 }
 
-void Renderer::renderDirect(int firstRow, int rowStride, Film& film, uint32_t begin, uint32_t end) {
+void Renderer::renderDirect(int firstRow, int rowStride, Film& film, uint32_t begin, uint32_t end, bool probe) {
+  const uint64_t stream = probe ? kProbeStream : kDirectStream;
   PathContext direct = *ctx_;
   direct.settings.minDepth = 1;
   direct.settings.maxDepth = 1;  // pt: the emission where the camera ray lands, nothing after it
@@ -84,10 +85,10 @@ void Renderer::renderDirect(int firstRow, int rowStride, Film& film, uint32_t be
   for (int row = firstRow; row < settings_.height; row += rowStride)
     for (int x = 0; x < settings_.width; ++x) {
       const uint64_t pixel = static_cast<uint64_t>(row) * settings_.width + x;
-      Rng shift(hashKey(settings_.seed, kDirectStream, pixel));
+      Rng shift(hashKey(settings_.seed, stream, pixel));
       const uint32_t sx = shift.nextU32(), sy = shift.nextU32();
       for (uint32_t k = begin; k < end; ++k) {
-        source.reset(hashKey(settings_.seed, kDirectStream, pixel, static_cast<uint64_t>(k)));
+        source.reset(hashKey(settings_.seed, stream, pixel, static_cast<uint64_t>(k)));
         const Vec2 offset = shiftedSobol02(k, sx, sy);
         sample.clear();
         tracePath(direct, Vec2(x + offset.x, row + offset.y), source, sample);

@@ -32,8 +32,9 @@ class Renderer {
   // The directly seen emission (paths of one segment) of rows firstRow, firstRow + rowStride, ...:
   // camera rays number begin .. end - 1 of every pixel, at the points of a shifted (0,2)-sequence,
   // on streams of their own; after rays 0 .. N - 1, resolve with divisor N (render/direct_pass.h
-  // decides N).
-  void renderDirect(int firstRow, int rowStride, Film& film, uint32_t begin, uint32_t end);
+  // decides N). `probe` traces on streams apart again: rays that decide whether the pass runs
+  // must not be part of its estimate.
+  void renderDirect(int firstRow, int rowStride, Film& film, uint32_t begin, uint32_t end, bool probe = false);
   // The direct pass found no emitter in view: the chains estimate the paths of one segment again.
   // Only before any chain has stepped.
   void keepDirectEmissionInChains();
@@ -58,6 +59,7 @@ class Renderer {
   std::array<PathSample, RayTracer::kPacketSize> samples_{};
   uint64_t sampleCount_ = 0;
   static constexpr uint64_t kDirectStream = 0xd12ec7;  // keeps renderDirect's streams apart
+  static constexpr uint64_t kProbeStream = 0xd12ec8;   // and the probe's from those
 };
 
 // Applies the scene's defaults to settings left unset (width/height/max depth 0).

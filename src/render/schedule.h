@@ -2,6 +2,7 @@
 // Pure decisions of the independent-sample render loop: which rank renders which unit of work,
 // and when a timed render stops. The MPI layer feeds them gathered values, so every rank takes
 // the same decision.
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -29,6 +30,17 @@ constexpr int kDirectProbeSpp = 4;          // first rays of every pixel; none s
 constexpr int kDirectMinSpp = 16;           // fewer left emitters' outlines noisier than the chains did
 constexpr int kDirectMaxSpp = 1 << 20;      // --direct-emission-spp's ceiling
 constexpr double kDirectBudgetShare = 0.06;  // a timed render's pass stays within this share of the budget
+constexpr double kDirectChunkSeconds = 0.1;  // a stop request waits about this long in the pass
+
+// The pass takes its rays in chunks of every pixel, the ranks agreeing on a stop request after
+// each: the next chunk's rays per pixel, from the slowest rank's `seconds` for the last `taken`,
+// aimed at kDirectChunkSeconds and at most 4 times the last (a first chunk timed too short).
+inline uint32_t nextDirectChunk(uint32_t taken, double seconds) {
+  const double most = 4.0 * double(std::max<uint32_t>(taken, 1));
+  if (!(seconds > 0.0)) return uint32_t(std::min<double>(most, double(kDirectMaxSpp)));
+  const double aimed = kDirectChunkSeconds * double(taken) / seconds;
+  return uint32_t(std::clamp(std::min(aimed, most), 1.0, double(kDirectMaxSpp)));
+}
 
 // A fixed budget: the power of two nearest 2 x mutationsPerPixel, at least kDirectMinSpp.
 int autoDirectSpp(double mutationsPerPixel);

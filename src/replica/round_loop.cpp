@@ -115,7 +115,7 @@ RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule,
     s.stepAndPost(0, start.rounds);
     first = 1;
   }
-  AgreedClock clock{start.elapsed, pool.roundsReadBack(0)};
+  AgreedClock clock{start.elapsed, pool.roundsReadBack(0), {}};
   if (start.secondsPerRound > 0.0) clock.pace.add(start.secondsPerRound);  // until rounds are timed
   for (;;) {
     for (int g = first; g < groups; ++g) {

@@ -2,12 +2,15 @@
 // emitter is in view, and the doublings of a timed render (render/direct_pass.h, render/schedule.h).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <deque>
+#include <fstream>
 
 #include "render/direct_pass.h"
 #include "render/schedule.h"
 #include "scene/gltf_loader.h"
 #include "test_support.h"
+#include "../scene/gltf_test_support.h"
 
 using namespace relt;
 
@@ -116,4 +119,60 @@ TEST(DirectPass, AutoWithATimeBudgetDoublesWhileTheSlowestRankStaysWithinTheShar
   EXPECT_EQ(pass.spp, 4 * kDirectMinSpp);  // 2 x 1 and 2 x 2 fit in 6 s, 2 x 4 does not
   EXPECT_EQ(pass.seconds, 4.0);
   EXPECT_TRUE(slowest.empty());
+}
+
+// A lamp seen far away covers a tenth of the only pixel. The probe sees it in some renders and not
+// in others; the pass runs only where it did, so the pass must not reuse the probe's rays: they
+// would make it too bright exactly there (1/16 (1 + 12 x 0.1) = 0.1375 on average for 16 rays).
+// Over 600 seeds the pass's mean where it ran must be the covered fraction.
+TEST(DirectPass, ThePassIsUnbiasedWhereTheProbeDecidedItRuns) {
+  test::GltfBuilder b;
+  const float h = float(std::sqrt(0.1) * 10.0 * std::tan(0.4));  // yfov 0.8: a tenth of the view
+  const int lamp = b.material({{"pbrMetallicRoughness", {{"baseColorFactor", {0, 0, 0, 1}}}},
+                               {"emissiveFactor", {1, 1, 1}}});
+  const int mesh = b.triangleMesh({{-h, -h, -10}, {h, -h, -10}, {h, h, -10}, {-h, h, -10}}, {0, 1, 2, 0, 2, 3}, lamp);
+  b.scene({b.node({{"mesh", mesh}}), b.node({{"camera", b.camera(0.8)}})});
+  const std::string dir = test::makeTempDir("subpixel_lamp");
+  const std::string path = dir + "/lamp.gltf";
+  std::ofstream(path) << b.finish().dump();
+  const Scene scene = loadGltf(path);
+  double sum = 0.0, squares = 0.0;
+  int ran = 0;
+  const int seeds = 600;
+  for (int seed = 1; seed <= seeds; ++seed) {
+    RenderSettings s = small(kDirectSppAuto);
+    s.width = s.height = 1;
+    s.seed = uint64_t(seed);
+    s.mutationsPerPixel = 8;  // autoDirectSpp: 16 rays
+    Renderer renderer(scene, s);
+    Film film(1, 1);
+    const DirectPass pass = renderDirectPass(renderer, 0, 1, film, kOneRank);
+    if (pass.spp == 0) continue;
+    ASSERT_EQ(pass.spp, 16);
+    const double v = film.data()[1] / pass.spp;  // green
+    sum += v;
+    squares += v * v;
+    ++ran;
+  }
+  ASSERT_GT(ran, seeds / 10) << "the probe should see the lamp in many renders";
+  ASSERT_LT(ran, seeds * 9 / 10) << "and miss it in many";
+  const double mean = sum / ran, error = std::sqrt((squares / ran - mean * mean) / (ran - 1));
+  EXPECT_NEAR(mean, 0.1, 4.0 * error + 1e-4) << ran << " renders ran the pass";
+}
+
+// A stop request is agreed on between chunks of every pixel's rays: the pass ends at the chunk it
+// came in, every pixel with the same rays, the film that of those rays alone.
+TEST(DirectPass, AStopRequestEndsThePassBetweenChunksWithEveryPixelAlike) {
+  RenderSettings s = small(1 << 14);
+  Renderer renderer(withLightInView(), s);
+  int asked = 0;
+  const RankReduce stopsAtTheThird{[](double v) { return v; }, [](double v) { return v; }, [&] { return ++asked == 3; }};
+  Film film(12, 10);
+  const DirectPass pass = renderDirectPass(renderer, 0, 1, film, stopsAtTheThird);
+  EXPECT_TRUE(pass.stopped);
+  // Chunks of 4, then at most 4 times the last (each takes far less than the aimed 0.1 s): 4 + 16 + 64.
+  EXPECT_EQ(pass.spp, 4 + 16 + 64);
+  Film expected(12, 10);
+  renderer.renderDirect(0, 1, expected, 0, uint32_t(pass.spp));
+  EXPECT_EQ(film.data(), expected.data());
 }
