@@ -1,6 +1,7 @@
 // relt: the distributed renderer's entry point. Every run initialises MPI; a plain run is one rank.
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -18,6 +19,27 @@ namespace {
 
 constexpr int kExitInput = 2;
 constexpr int kExitInternal = 1;
+
+// A finite number above zero; CLI::PositiveNumber names its range up to the largest double.
+const CLI::Validator kPositive(
+    [](std::string& text) {
+      double v = 0.0;
+      try {
+        v = std::stod(text);
+      } catch (const std::exception&) {
+        return "must be a number > 0, got " + text;
+      }
+      return std::isfinite(v) && v > 0.0 ? std::string() : "must be a number > 0, got " + text;
+    },
+    "> 0");
+
+// The word after `relt`, if it is no subcommand (CLI11 would only say one is required).
+std::string unknownSubcommand(int argc, char** argv, const CLI::App& app) {
+  if (argc < 2 || argv[1][0] == '-') return "";
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+    if (sub->get_name() == argv[1]) return "";
+  return argv[1];
+}
 
 struct Options {
   relt::RenderSettings render;
@@ -81,7 +103,7 @@ void addReplicaOptions(CLI::App& cmd, Options& o) {
            ->capture_default_str());
   only(cmd.add_flag("--per-level", r.perLevel, "relt: also write each level's contribution as an EXR layer levelK"));
   only(cmd.add_option("--relaxed-eps", r.family.relaxedEps1, "relt relaxed: eps_1 as a multiple of the mean of I")
-           ->check(CLI::PositiveNumber)
+           ->check(kPositive)
            ->capture_default_str());
   only(cmd.add_option("--relaxed-ratio", r.family.relaxedRatio, "relt relaxed: eps_{k+1} / eps_k")
            ->check(CLI::Range(1.0, 1e6))
@@ -116,7 +138,7 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
       ->capture_default_str();
   auto* spp = cmd.add_option("--spp", r.spp, "samples per pixel (default 16)")->check(CLI::Range(1, 1 << 24));
   auto* time = cmd.add_option("--time", r.seconds, "render for this many seconds (decided collectively)")
-                   ->check(CLI::PositiveNumber);
+                   ->check(kPositive);
   auto* mpp = cmd.add_option("--mutations-per-pixel", r.mutationsPerPixel,
                              "Markov-chain integrators: mutations per pixel (default 16)")
                   ->check(CLI::Range(1e-3, 1e6));
@@ -136,8 +158,6 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--small-step-max", r.smallStepMax, "Kelemen small step: largest size s2")
       ->check(CLI::Range(1e-7, 0.5))
       ->capture_default_str();
-  cmd.add_flag("--kelemen-weights", r.kelemenWeights,
-               "pssmlt: weight splats by Kelemen's balance heuristic between chain and large-step samples");
   cmd.add_option("--direct-emission-spp", o.directSpp,
                  "pssmlt, relt: estimate the directly seen emission apart with N camera rays per pixel (a shifted "
                  "(0,2)-sequence: powers of two are best) and leave the chains the longer paths (0: the chains do it all; "
@@ -147,7 +167,7 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
       ->capture_default_str();
   cmd.add_option("--snapshot-every", r.snapshotEvery,
                  "pssmlt, mmlt: write the image so far (atomically) every this many seconds")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositive);
   cmd.add_option("--erpt-max-consecutive", r.erptMaxConsecutive,
                  "erpt: stop depositing after this many mutations on one pixel (biased noise filter; 0 = off)")
       ->check(CLI::Range(0, 1 << 20));
@@ -241,6 +261,10 @@ int main(int argc, char** argv) {
   average->add_option("-o,--output", o.averageOutput, "the mean (OpenEXR)")->required();
   average->add_option("--png", o.averagePng, "also write an sRGB PNG preview");
 
+  if (const std::string word = unknownSubcommand(argc, argv, app); !word.empty()) {
+    if (root) std::fprintf(stderr, "relt: error: unknown command '%s': expected render, info, compare or average (see relt --help)\n", word.c_str());
+    return kExitInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -302,8 +326,6 @@ int main(int argc, char** argv) {
     o.render.directSpp = o.directSpp == "auto" ? relt::kDirectSppAuto : std::stoi(o.directSpp);
     if (o.render.directSpp > 0 && !relt::directEmissionApart(o.render))
       throw relt::InputError("", "--direct-emission-spp", "only for pssmlt and relt");
-    if (o.render.kelemenWeights && o.render.integrator != relt::Integrator::Pssmlt)
-      throw relt::InputError("", "--kelemen-weights", "only for pssmlt");
     if (o.render.integrator != relt::Integrator::Erpt && (o.render.erptMaxConsecutive > 0 || o.render.erptProposalFilter))
       throw relt::InputError("", "--erpt-max-consecutive/--erpt-proposal-filter", "only for erpt");
     if (o.render.integrator == relt::Integrator::Erpt && o.render.snapshotEvery > 0.0)

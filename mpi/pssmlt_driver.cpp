@@ -38,7 +38,6 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
   ps.chains = settings.chains;
   ps.largeStepProbability = settings.largeStepProbability;
   ps.sizes = KelemenSizes{settings.smallStepMin, settings.smallStepMax};
-  ps.kelemenWeights = settings.kelemenWeights;
   const bool mmlt = settings.integrator == Integrator::Mmlt;
   PssEvaluator eval(renderer.context(), settings.width, settings.height);
   MmltEvaluator mmltEval(renderer.context(), settings.width, settings.height);
@@ -50,8 +49,6 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
   allreduceSum(targets);
   double bootstrapSum = 0.0;
   for (double t : targets) bootstrapSum += t;
-  // Kelemen weights use b while splatting, so the image keeps that (bootstrap) b throughout.
-  ps.kelemenNormaliser = bootstrapSum / static_cast<double>(targets.size());
 
   std::vector<int> mine;
   for (int c = 0; c < ps.chains; ++c)
@@ -68,7 +65,6 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
     const ChainCounters counters = sumOverRanks(pool.counters());
     if (perDepthOut) *perDepthOut = perDepth;
     if (countersOut) *countersOut = counters;
-    if (ps.kelemenWeights) return ps.kelemenNormaliser;
     return mmlt ? mmltNormaliser(targets, settings.maxDepth, perDepth)
                 : pooledNormaliser(bootstrapSum, targets.size(), counters);
   };

@@ -39,27 +39,17 @@ double pooledNormaliser(double bootstrapSum, uint64_t bootstrapCount, const Chai
 McmcChain::McmcChain(uint64_t seed, int chain, const PssmltSettings& settings)
     : u_(chainKey(seed, static_cast<uint64_t>(chain)), settings.sizes),
       rng_(chainKey(seed, static_cast<uint64_t>(chain)), 1),
-      pLarge_(settings.largeStepProbability),
-      kelemen_(settings.kelemenWeights),
-      pLargeTimesB_(static_cast<float>(settings.largeStepProbability * settings.kelemenNormaliser)) {}
+      pLarge_(settings.largeStepProbability) {}
 
 void McmcChain::finishStep(bool large, float proposed, Film& film) {
   const float a = acceptance(target_, proposed);
   (large ? counters_.largeProposed : counters_.smallProposed)++;
   if (large) counters_.largeTargetSum += proposed;
   if (!(proposed > 0.0f)) ++counters_.invalidProposals;
-  if (kelemen_) {
-    // (1 - a) / (I(x)/b + p_large) and (a + [large]) / (I(y)/b + p_large), divided by b so that the
-    // film takes the same final factor b * area / N as with expected values.
-    if (target_ > 0.0f && a < 1.0f) film.addSample(current_, (1.0 - a) / (target_ + pLargeTimesB_));
-    const double wy = a + (large ? 1.0 : 0.0);
-    if (proposed > 0.0f && wy > 0.0) film.addSample(proposal_, wy / (proposed + pLargeTimesB_));
-  } else {
-    // Expected values (thesis digest §2.7): the current state with 1 - a, the proposal with a,
-    // each over its own target (the density the chain samples it with, up to b).
-    if (target_ > 0.0f && a < 1.0f) film.addSample(current_, (1.0 - a) / target_);
-    if (a > 0.0f) film.addSample(proposal_, a / proposed);
-  }
+  // Expected values (thesis digest §2.7): the current state with 1 - a, the proposal with a, each
+  // over its own target (the density the chain samples it with, up to b).
+  if (target_ > 0.0f && a < 1.0f) film.addSample(current_, (1.0 - a) / target_);
+  if (a > 0.0f) film.addSample(proposal_, a / proposed);
   if (rng_.uniform() < a) {
     u_.accept();
     std::swap(current_, proposal_);

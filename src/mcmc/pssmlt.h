@@ -22,11 +22,6 @@ struct PssmltSettings {
   float largeStepProbability = 0.3f;
   int bootstrap = 100000;
   KelemenSizes sizes;
-  // Kelemen et al.'s weights (thesis digest §2.10): balance heuristic between "chain sample,
-  // density I/b" and "large-step sample, density 1 with probability p_large", instead of plain
-  // expected values. Needs b while splatting: the bootstrap estimate (kelemenNormaliser).
-  bool kelemenWeights = false;
-  double kelemenNormaliser = 0.0;
 };
 
 uint64_t bootstrapKey(uint64_t seed, uint64_t index);
@@ -86,8 +81,6 @@ class McmcChain {
   PrimarySampleVector u_;
   Rng rng_;
   float pLarge_;
-  bool kelemen_;
-  float pLargeTimesB_;  // p_large * b for Kelemen weights
   PathSample current_, proposal_;
   float target_ = 0.0f;
   ChainCounters counters_;

@@ -1,6 +1,21 @@
 #include "render/settings.h"
 
+#include <charconv>
+
 namespace relt {
+namespace {
+
+// A float setting as the number it was given as (0.3, not 0.30000001192092896): the shortest
+// decimal that reads back as the same float.
+double shortest(float v) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, v).ptr;
+  double out = v;
+  std::from_chars(text, end, out);
+  return out;
+}
+
+}  // namespace
 
 const char* integratorName(Integrator i) {
   switch (i) {
@@ -34,16 +49,16 @@ nlohmann::json RenderSettings::toJson() const {
   j["max_depth"] = maxDepth;
   j["seed"] = seed;
   j["camera"] = camera;
-  j["exposure"] = exposure;
+  j["exposure"] = shortest(exposure);
   j["mis"] = heuristic == MisHeuristic::Power ? "power" : "balance";
   if (integrator == Integrator::Erpt) {
     j["chain_length"] = chainLength;
     if (erptMaxConsecutive > 0) j["max_consecutive"] = erptMaxConsecutive;
     if (erptProposalFilter) j["proposal_filter"] = true;
-    j["small_step"] = {smallStepMin, smallStepMax};
+    j["small_step"] = {shortest(smallStepMin), shortest(smallStepMax)};
   }
   if (isMarkovChain(integrator)) {
-    j["mutations_per_pixel"] = mutationsPerPixel.value_or(16.0);
+    if (!seconds) j["mutations_per_pixel"] = mutationsPerPixel.value_or(16.0);  // a timed render has no such count
     if (integrator == Integrator::Relt) {
       const ReplicaSettings& r = replica;
       j["family"] = familyName(r.family.kind);
@@ -74,9 +89,8 @@ nlohmann::json RenderSettings::toJson() const {
     } else {
       j["chains"] = chains;
     }
-    j["large_step_probability"] = largeStepProbability;
-    j["small_step"] = {smallStepMin, smallStepMax};
-    if (kelemenWeights) j["kelemen_weights"] = true;
+    j["large_step_probability"] = shortest(largeStepProbability);
+    j["small_step"] = {shortest(smallStepMin), shortest(smallStepMax)};
     if (snapshotEvery > 0.0) j["snapshot_every"] = snapshotEvery;
     if (directEmissionApart(*this)) j["direct_emission_spp"] = directSpp == kDirectSppAuto ? nlohmann::json("auto") : nlohmann::json(directSpp);
   }

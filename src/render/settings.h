@@ -43,7 +43,6 @@ struct RenderSettings {
   bool erptProposalFilter = false;   // erpt proposed-mutations filter (biased)
   float largeStepProbability = 0.3f;                  // pssmlt, mmlt
   float smallStepMin = 1.0f / 1024, smallStepMax = 1.0f / 64;  // Kelemen small-step sizes s1, s2
-  bool kelemenWeights = false;                         // pssmlt: Kelemen's large-step weighting
   ReplicaSettings replica;      // relt: family, ladder, exchanges, placement
   double snapshotEvery = 0.0;  // Markov chains: write the image so far every this many seconds (0: never)
   // pssmlt, relt: estimate the directly seen emission (paths of one segment) apart, with this many

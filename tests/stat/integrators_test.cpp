@@ -121,11 +121,6 @@ TEST(IntegratorAgreement, PssmltAndBdptAgreeOnCornellBox) {
   expectAgreementOnCornellBox(Integrator::Pssmlt, Integrator::Bdpt, 16, 20);
 }
 
-TEST(IntegratorAgreement, PssmltWithKelemenWeightsAndBdptAgreeOnCornellBox) {
-  expectAgreementOnCornellBox(Integrator::Pssmlt, Integrator::Bdpt, 16, 20,
-                              [](RenderSettings& s) { s.kelemenWeights = true; });
-}
-
 TEST(IntegratorAgreement, ErptAndBdptAgreeOnCornellBox) {
   // erpt: 2 seeds per pixel, each redistributed by about 100 mutations.
   expectAgreementOnCornellBox(Integrator::Erpt, Integrator::Bdpt, 2, 20);

@@ -76,7 +76,6 @@ Image renderChainsOrSamples(Renderer& renderer) {
     PssmltSettings ps;
     ps.mutationsPerPixel = s.mutationsPerPixel.value_or(16.0);
     ps.chains = s.chains;
-    ps.kelemenWeights = s.kelemenWeights;
     const double area = double(s.width) * s.height;
     const auto total = static_cast<uint64_t>(std::llround(ps.mutationsPerPixel * area));
     std::vector<int> chains(static_cast<size_t>(ps.chains));
@@ -93,9 +92,8 @@ Image renderChainsOrSamples(Renderer& renderer) {
     const std::vector<double> targets = bootstrapTargets(eval, s.seed, ps.bootstrap, 0, 1);
     double sum = 0.0;
     for (double t : targets) sum += t;
-    ps.kelemenNormaliser = sum / targets.size();
     const ChainCounters counters = runChains(eval, targets, s.seed, ps, chains, total, film);
-    const double b = ps.kelemenWeights ? ps.kelemenNormaliser : pooledNormaliser(sum, targets.size(), counters);
+    const double b = pooledNormaliser(sum, targets.size(), counters);
     return Renderer::resolve(film, film.data(), pssmltResolveDivisor(total, b, area));
   }
   const int spp = s.spp.value_or(16);

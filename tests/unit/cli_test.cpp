@@ -44,6 +44,10 @@ TEST_P(CliRejects, WithOneLineAndExitCode2AndNoOutput) {
 INSTANTIATE_TEST_SUITE_P(
     BadOptions, CliRejects,
     ::testing::Values(BadInvocation{"NoSubcommand", "", "subcommand"},
+                      BadInvocation{"UnknownSubcommand", "foo", "unknown command 'foo'"},
+                      BadInvocation{"NegativeTime", "render " + kScene + " -o OUT --time -1", "--time: must be a number > 0, got -1 ("},
+                      BadInvocation{"InfiniteTime", "render " + kScene + " -o OUT --time inf", "must be a number > 0"},
+                      BadInvocation{"KelemenWeightsRemoved", "render " + kScene + " -o OUT --integrator pssmlt --kelemen-weights", "kelemen-weights"},
                       BadInvocation{"UnknownOption", "render " + kScene + " -o OUT --bogus 1", "bogus"},
                       BadInvocation{"MissingOutput", "render " + kScene, "output"},
                       BadInvocation{"SppWithPssmlt", "render " + kScene + " -o OUT --integrator pssmlt --spp 4", "mutations-per-pixel"},
@@ -51,7 +55,6 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"SnapshotWithErpt", "render " + kScene + " -o OUT --integrator erpt --snapshot-every 1", "--snapshot-every"},
                       BadInvocation{"ZeroChains", "render " + kScene + " -o OUT --integrator pssmlt --chains 0", "chains"},
                       BadInvocation{"ZeroChainLength", "render " + kScene + " -o OUT --integrator erpt --chain-length 0", "chain-length"},
-                      BadInvocation{"KelemenWeightsWithMmlt", "render " + kScene + " -o OUT --integrator mmlt --kelemen-weights", "pssmlt"},
                       BadInvocation{"DirectEmissionWithMmlt", "render " + kScene + " -o OUT --integrator mmlt --direct-emission-spp 16", "only for pssmlt and relt"},
                       BadInvocation{"NegativeDirectEmissionSpp", "render " + kScene + " -o OUT --integrator pssmlt --direct-emission-spp -1", "direct-emission-spp"},
                       BadInvocation{"WordForDirectEmissionSpp", "render " + kScene + " -o OUT --integrator relt --direct-emission-spp often", "direct-emission-spp"},
@@ -205,4 +208,18 @@ TEST(Cli, RenderWritesExrPngAndStats) {
   EXPECT_TRUE(fileExists(dir + "/a.exr"));
   EXPECT_TRUE(fileExists(dir + "/a.png"));
   EXPECT_TRUE(fileExists(dir + "/a.json"));
+}
+
+// stats.json's settings say how the image was made: a timed render names no mutation count it did
+// not have, and float settings read as given (0.3, not 0.30000001192092896).
+TEST(Cli, StatsSettingsAreTheOnesGiven) {
+  const std::string dir = makeTempDir("stats-settings");
+  const CommandResult r = runCommand(reltBinary() + " render " + kScene + " -o " + dir + "/t.exr --stats " + dir +
+                                     "/t.json --integrator pssmlt --time 0.2 --width 16 --height 16 --chains 4");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream stats(dir + "/t.json");
+  const nlohmann::json s = nlohmann::json::parse(stats)["settings"];
+  EXPECT_FALSE(s.contains("mutations_per_pixel")) << s.dump();
+  EXPECT_EQ(s["large_step_probability"].dump(), "0.3");
+  EXPECT_EQ(s["small_step"].dump(), "[0.0009765625,0.015625]");
 }
