@@ -54,7 +54,7 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
       bootstrapSum_[size_t(k)] += qi[size_t(k)];
     }
   }
-  bootstrapCount_ = double(samples);
+  bootstrapCount_ = bootstrapSamples_ = double(samples);
   largeSum_.assign(size_t(m), 0.0);
   if (settings.normaliserLag < 1) throw std::invalid_argument("the normaliser lag must be at least 1 round");
   pendingLarge_.assign(size_t(roundGroups(settings.ladders)), LargeStepSums(m));  // defines groups()
@@ -190,7 +190,12 @@ size_t ReplicaPool::dueReadBacks(int group, uint64_t round) const {
   const std::deque<PostedRound>& rounds = posted_[size_t(group)];
   const size_t n = rounds.size();
   const size_t lag = size_t(normaliserLagAt(settings_.normaliserLag, settings_.normaliserLagGrowth, round + 1));
-  if (!epochRead_[size_t(group)] && n > 0 && rounds.back().epoch == epoch_) return n;
+  // After the regularisation moved, every posted round is read back at once (lag 1) until the new
+  // targets have a bootstrap's worth of large steps: with the lag the normalisers would rest on the
+  // first round read back for lag rounds, and for the whole render when the moves come faster than
+  // the lag (decay above about 0.085).
+  const bool few = epoch_ > 0 && largeCount_ < bootstrapSamples_;
+  if ((few || !epochRead_[size_t(group)]) && n > 0 && rounds.back().epoch == epoch_) return n;
   return n >= lag ? n - lag + 1 : 0;
 }
 

@@ -89,6 +89,10 @@ class ReplicaPool {
   // Rounds of the group posted and not read back yet (lag - 1 between rounds once running), and
   // read back so far by this pool (since it was made or restored).
   size_t unread(int group) const { return posted_[size_t(group)].size(); }
+  // How often the regularisation moved the targets, and the samples the normalisers now rest on
+  // (bootstrap and large steps, both under the current targets).
+  uint64_t regularisationMoves() const { return epoch_; }
+  double normaliserSamples() const { return bootstrapCount_ + largeCount_; }
   uint64_t roundsReadBack(int group) const { return readBackCount_[size_t(group)]; }
   // Collectives still pending when the loop ends.
   size_t inFlight(int group) const;
@@ -170,6 +174,7 @@ class ReplicaPool {
   std::vector<int> levelOf_;            // every chain's level (kept identical on every rank)
   std::vector<double> bootstrapSum_;    // sum of q_k over the bootstrap
   double bootstrapCount_ = 0.0;
+  double bootstrapSamples_ = 0.0;       // the bootstrap's size, also after the targets moved
   std::vector<double> largeSum_;        // all ranks' large-step sums so far
   double largeCount_ = 0.0;
   std::vector<LargeStepSums> pendingLarge_;  // per group: this rank's, since the group's last message

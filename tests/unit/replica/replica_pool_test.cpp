@@ -565,3 +565,34 @@ TEST(ReplicaPool, AResumedRenderIsTheRenderThatNeverStopped) {
     fx.settings.placement = Placement::Auto;
   }
 }
+
+// Tempered targets whose regularisation moves every 12 % more steps (decay 0.1): faster than the
+// lag grows. After each move the normalisers must rest on every large step taken under the new
+// targets until they have a bootstrap's worth, not on the first round read back for lag rounds.
+TEST(ReplicaPool, AfterTheRegularisationMovesTheNormalisersReadEveryRoundUntilABootstrapsWorth) {
+  for (Placement placement : {Placement::Spread, Placement::Packed}) {
+    Fixture fx;
+    fx.settings.placement = placement;
+    fx.settings.ladders = 4;
+    fx.settings.family.kind = FamilyKind::Tempered;
+    fx.settings.family.levels = 4;
+    fx.settings.family.regularisation = 0.05;
+    fx.settings.family.regularisationDecay = 0.1;
+    const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+    ReplicaPool pool(*fx.eval, fx.settings, 5, lum, 0, 1);
+    const ReplicaSchedule schedule(16.0 * 12.0, pool.chainCount(), fx.settings.exchangeInterval, std::nullopt, 2000.0);
+    std::vector<Film> films(1, Film(16, 12));
+    LocalTransport transport;
+    RoundLoopHooks hooks;
+    hooks.elapsed = [] { return 0.0; };
+    int few = 0;
+    hooks.roundDone = [&](uint64_t rounds, double, bool) {
+      if (pool.regularisationMoves() == 0 || pool.normaliserSamples() >= fx.settings.bootstrap) return;
+      ++few;
+      EXPECT_EQ(pool.unread(0), 0u) << "round " << rounds << " " << placementName(placement);
+    };
+    runRoundLoop(pool, schedule, transport, films, hooks);
+    EXPECT_GT(pool.regularisationMoves(), 5u);
+    EXPECT_GT(few, 10) << "rounds with fewer samples than the bootstrap after a move";
+  }
+}
