@@ -212,6 +212,9 @@ const uint8_t* AccessorReader::viewData(uint32_t view, uint64_t offset, uint64_t
   // each buffer at least that long; check again so a broken invariant cannot read out of bounds.
   const BufferView& v = layout_.views[view];
   const std::vector<uint8_t>& buffer = buffers_[v.buffer];
+  if (buffer.empty())  // byteLength >= 1, so only a buffer without data is empty
+    ctx_.fail(indexed("buffers", v.buffer), "has no uri (only the first buffer of a .glb file may omit it), but " +
+                                                element + " reads from it");
   if (offset > v.byteLength || bytes > v.byteLength - offset || v.byteOffset + v.byteLength > buffer.size())
     ctx_.fail(element, "internal error: accessor range outside its buffer");
   return buffer.data() + v.byteOffset + offset;
@@ -273,6 +276,11 @@ std::vector<Vec3> AccessorReader::readVec3(uint32_t index, const std::string& us
     out[i] = Vec3(xyz[0], xyz[1], xyz[2]);
   }
   return out;
+}
+
+uint32_t AccessorReader::restartValue(uint32_t index) const {
+  const uint32_t t = layout_.accessors[index].componentType;
+  return t == kUnsignedByte ? 0xFFu : t == kUnsignedShort ? 0xFFFFu : 0xFFFFFFFFu;
 }
 
 std::vector<uint32_t> AccessorReader::readIndices(uint32_t index, const std::string& user) const {

@@ -54,7 +54,8 @@ BufferLayout parseBufferLayout(const Context& ctx, const Json& doc);
 
 const char* componentTypeName(uint32_t componentType);
 
-// Reads accessor data from loaded buffers (each at least its declared byteLength long).
+// Reads accessor data from loaded buffers (each at least its declared byteLength long, or empty for
+// a buffer without data: reading from that one fails).
 class AccessorReader {
  public:
   AccessorReader(const Context& ctx, const BufferLayout& layout, const std::vector<std::vector<uint8_t>>& buffers)
@@ -64,6 +65,8 @@ class AccessorReader {
   std::vector<Vec3> readVec3(uint32_t accessor, const std::string& user, const std::string& semantic) const;
   // Vertex indices: UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT scalars.
   std::vector<uint32_t> readIndices(uint32_t accessor, const std::string& user) const;
+  // The largest value of an index accessor's component type: the primitive restart value.
+  uint32_t restartValue(uint32_t accessor) const;
   uint64_t count(uint32_t accessor) const { return layout_.accessors[accessor].count; }
 
  private:

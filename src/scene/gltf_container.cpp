@@ -38,7 +38,7 @@ std::string chunkName(uint32_t type) {
 
 // Splits a GLB container (glTF 2.0 spec, "GLB File Format Specification") into its JSON text and
 // BIN chunk, checking every length against the bytes actually present.
-void splitGlb(const Context& ctx, const std::vector<uint8_t>& bytes, std::string* json,
+void splitGlb(Context& ctx, const std::vector<uint8_t>& bytes, std::string* json,
               std::optional<std::vector<uint8_t>>* bin) {
   const std::string element = "GLB";
   if (bytes.size() < 12)
@@ -49,9 +49,12 @@ void splitGlb(const Context& ctx, const std::vector<uint8_t>& bytes, std::string
   if (version != 2)
     ctx.fail(element, "container version " + std::to_string(version) + " is not supported (expected 2)");
   const uint32_t length = readU32(bytes, 8);
-  if (length != bytes.size())
+  if (length > bytes.size() || length < 12)
     ctx.fail(element, "the header declares " + std::to_string(length) + " bytes but the file has " +
                           std::to_string(bytes.size()) + " (truncated or corrupt)");
+  // Bytes after the declared length are outside the GLB (the validator's GLB_EXTRA_DATA warning).
+  if (length < bytes.size())
+    ctx.warn("GLB: " + std::to_string(bytes.size() - length) + " bytes after the declared length are ignored");
   size_t offset = 12;
   bool haveJson = false;
   for (int chunk = 0; offset < length; ++chunk) {
@@ -102,7 +105,7 @@ std::string percentDecode(const std::string& s) {
 
 }  // namespace
 
-GltfSource readGltfSource(const Context& ctx, const std::string& path) {
+GltfSource readGltfSource(Context& ctx, const std::string& path) {
   std::string reason;
   std::optional<std::vector<uint8_t>> bytes = readWholeFile(path, &reason);
   if (!bytes) ctx.fail("", "cannot read the file: " + reason);
@@ -174,7 +177,7 @@ std::vector<uint8_t> loadBufferBytes(const Context& ctx, GltfSource& src, size_t
   std::vector<uint8_t> data;
   std::string origin;
   if (!uri) {
-    if (!src.glb || index != 0) ctx.fail(element, "has no uri (only the first buffer of a .glb file may omit it)");
+    if (!src.glb || index != 0) return data;  // no data; an accessor that reads it fails
     if (!src.bin) ctx.fail(element, "refers to the GLB BIN chunk, but the file has none");
     data = std::move(*src.bin);  // only buffers[0] can use it, so it can be moved
     src.bin.reset();

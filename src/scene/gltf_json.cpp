@@ -42,6 +42,12 @@ const Json& requireObjectValue(const Context& ctx, const Json& obj, const std::s
 std::optional<uint64_t> asUInt(const Json& v) {
   if (v.is_number_unsigned()) return v.get<uint64_t>();
   if (v.is_number_integer() && v.get<int64_t>() >= 0) return static_cast<uint64_t>(v.get<int64_t>());
+  // JSON Schema 2020-12, which glTF 2.0's schema follows, counts 14.0 as an integer (and so does
+  // the validator). Beyond 2^53 a double no longer holds every integer: left to the callers' limit.
+  if (v.is_number_float()) {
+    const double d = v.get<double>();
+    if (d >= 0.0 && d <= double(kMaxJsonInteger) && d == std::floor(d)) return static_cast<uint64_t>(d);
+  }
   return std::nullopt;
 }
 

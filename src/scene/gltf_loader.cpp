@@ -5,6 +5,7 @@
 // of the checks (JSON structure, then buffer I/O, then data) lets a bad file fail fast and by name.
 #include "scene/gltf_loader.h"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <cstdio>
@@ -45,7 +46,7 @@ const std::map<std::string, std::string> kExtensionPurpose = {
 
 const char* kModeNames[] = {"POINTS",    "LINES",          "LINE_LOOP",   "LINE_STRIP",
                             "TRIANGLES", "TRIANGLE_STRIP", "TRIANGLE_FAN"};
-constexpr uint32_t kTriangles = 4, kTriangleStrip = 5, kTriangleFan = 6;
+constexpr uint32_t kTriangles = 4, kTriangleStrip = 5, kTriangleFan = 6, kUnknownMode = 7;
 
 void checkAsset(const Context& ctx, const Json& doc) {
   const Json* asset = getObject(ctx, doc, "asset", "");
@@ -110,11 +111,13 @@ std::vector<std::vector<PrimitiveDecl>> parseMeshes(Context& ctx, const Json& do
       PrimitiveDecl d;
       const Json* attributes = getObject(ctx, prim, "attributes", pe);
       if (!attributes) ctx.fail(pe, "attributes is missing");
+      // Points and lines are valid glTF that a renderer of surfaces cannot draw; an unknown mode
+      // is only a warning for the validator. Both are left undrawn rather than refused.
       const uint64_t mode = getUInt(ctx, prim, "mode", pe).value_or(kTriangles);
-      if (mode > kTriangleFan) ctx.fail(pe, "mode " + std::to_string(mode) + " is not a valid primitive mode");
+      if (mode > kTriangleFan) ctx.warn(pe + " has mode " + std::to_string(mode) + ", which glTF 2.0 does not define: not drawn");
       if (mode < kTriangles)
-        ctx.fail(pe, std::string("mode ") + kModeNames[mode] + " is not supported: relt renders triangles");
-      d.mode = static_cast<uint32_t>(mode);
+        ctx.warn(std::string("primitives of mode ") + kModeNames[mode] + " are not drawn (relt renders triangles)");
+      d.mode = static_cast<uint32_t>(std::min<uint64_t>(mode, kUnknownMode));
       d.indices = getIndex(ctx, prim, "indices", pe, "accessors", accessorCount);
       d.material = getIndex(ctx, prim, "material", pe, "materials", materialCount);
       for (auto it = attributes->begin(); it != attributes->end(); ++it) {
@@ -142,11 +145,12 @@ std::vector<std::vector<PrimitiveDecl>> parseMeshes(Context& ctx, const Json& do
 struct CameraDecl {
   std::string name;
   bool perspective = true;
+  bool known = true;  // false: a type glTF 2.0 does not define, skipped with a warning
   double yfov = 0.0;
   std::optional<double> aspect;
 };
 
-std::vector<CameraDecl> parseCameras(const Context& ctx, const Json& doc) {
+std::vector<CameraDecl> parseCameras(Context& ctx, const Json& doc) {
   std::vector<CameraDecl> cameras(arraySize(ctx, doc, "cameras"));
   for (size_t i = 0; i < cameras.size(); ++i) {
     const std::string element = indexed("cameras", i);
@@ -172,8 +176,14 @@ std::vector<CameraDecl> parseCameras(const Context& ctx, const Json& doc) {
     } else if (type == "orthographic") {
       if (!getObject(ctx, o, "orthographic", element)) ctx.fail(element, "orthographic is missing");
       c.perspective = false;
+    } else if (getMember(ctx, o, "type", element)) {
+      // An enum value outside the list is only a warning for the validator (later versions or
+      // extensions may add values), so the camera is skipped rather than the file refused.
+      ctx.warn(element + " has type " + brief(Json(type)) + ", which glTF 2.0 does not define: skipped");
+      c.perspective = false;
+      c.known = false;
     } else {
-      ctx.fail(element, "type " + brief(o.value("type", Json())) + " must be \"perspective\" or \"orthographic\"");
+      ctx.fail(element, "type is missing (\"perspective\" or \"orthographic\")");
     }
   }
   return cameras;
@@ -194,7 +204,7 @@ const Json* lightList(const Context& ctx, const Json& doc) {
   return lp ? getArray(ctx, *lp, "lights", "extensions.KHR_lights_punctual") : nullptr;
 }
 
-std::vector<LightDecl> parseLights(const Context& ctx, const Json& doc) {
+std::vector<LightDecl> parseLights(Context& ctx, const Json& doc) {
   std::vector<LightDecl> lights;
   const Json* list = lightList(ctx, doc);
   if (!list) return lights;
@@ -203,9 +213,11 @@ std::vector<LightDecl> parseLights(const Context& ctx, const Json& doc) {
     const Json& o = (*list)[i];
     LightDecl l;
     l.name = getString(ctx, o, "name", element).value_or("");
-    l.type = getString(ctx, o, "type", element).value_or("");
-    if (l.type != "point" && l.type != "spot" && l.type != "directional")
-      ctx.fail(element, "type " + brief(o.value("type", Json())) + " must be \"point\", \"spot\" or \"directional\"");
+    const std::optional<std::string> type = getString(ctx, o, "type", element);
+    if (!type) ctx.fail(element, "type is missing (\"point\", \"spot\" or \"directional\")");
+    l.type = *type;
+    if (l.type != "point" && l.type != "spot" && l.type != "directional")  // as for cameras: skipped
+      ctx.warn(element + " has type " + brief(Json(l.type)) + ", which KHR_lights_punctual does not define: skipped");
     const std::vector<double> color = getNumbers(ctx, o, "color", element, 3, {1, 1, 1}, 0.0, 1.0);
     const double intensity = getNumber(ctx, o, "intensity", element, 1.0, 0.0, INFINITY);
     l.intensity = Color(float(color[0]), float(color[1]), float(color[2])) * float(intensity);
@@ -252,10 +264,11 @@ struct LocalPrimitive {
   std::optional<uint32_t> material;
 };
 
-LocalPrimitive readPrimitive(const Context& ctx, const AccessorReader& reader, const PrimitiveDecl& d,
+LocalPrimitive readPrimitive(Context& ctx, const AccessorReader& reader, const PrimitiveDecl& d,
                              const std::string& element) {
   LocalPrimitive out;
   out.material = d.material;
+  if (!d.position || d.mode < kTriangles || d.mode > kTriangleFan) return out;  // not drawn (warned)
   out.positions = reader.readVec3(*d.position, element, "POSITION");
   for (size_t v = 0; v < out.positions.size(); ++v)
     if (!isFinite(out.positions[v]))
@@ -268,20 +281,36 @@ LocalPrimitive readPrimitive(const Context& ctx, const AccessorReader& reader, c
     if (out.normals.size() != vertexCount)
       ctx.fail(element, "NORMAL has " + std::to_string(out.normals.size()) + " entries but POSITION has " +
                             std::to_string(vertexCount));
-    for (Vec3& n : out.normals) {
-      const float len = glm::length(n);
+    for (size_t v = 0; v < vertexCount; ++v) {
+      // NaN or infinite normals are corrupt data (the validator's ACCESSOR_INVALID_FLOAT), not a
+      // direction to fall back from.
+      if (!isFinite(out.normals[v]))
+        ctx.fail(element, "NORMAL (" + indexed("accessors", *d.normal) + ") has a non-finite value at vertex " +
+                              std::to_string(v));
+      const float len = glm::length(out.normals[v]);
+      // The validator's tolerance (unitLengthThresholdVec3); relt renormalises either way.
+      if (!(std::abs(len - 1.0f) <= 0.00674f))
+        ctx.warn("NORMAL vectors that are not of unit length are renormalised (zero ones: the geometric normal)");
       // A zero entry means "use the geometric normal" (Scene::normals), the safe fallback.
-      n = (std::isfinite(len) && len > 0.0f) ? n / len : Vec3(0.0f);
+      out.normals[v] = (std::isfinite(len) && len > 0.0f) ? out.normals[v] / len : Vec3(0.0f);
     }
   }
   std::vector<uint32_t> indices;
   if (d.indices) {
     indices = reader.readIndices(*d.indices, element);
-    for (size_t i = 0; i < indices.size(); ++i)
+    const uint32_t restart = reader.restartValue(*d.indices);
+    for (size_t i = 0; i < indices.size(); ++i) {
+      // glTF 2.0 §3.7.2.1: indices MUST NOT hold the primitive restart value, which a GPU with
+      // restart enabled would read as a break in the primitive.
+      if (indices[i] == restart)
+        ctx.fail(element, "index " + std::to_string(restart) + " at position " + std::to_string(i) + " of " +
+                              indexed("accessors", *d.indices) +
+                              " is the primitive restart value of its component type, which glTF forbids");
       if (indices[i] >= vertexCount)
         ctx.fail(element, "index " + std::to_string(indices[i]) + " at position " + std::to_string(i) + " of " +
                               indexed("accessors", *d.indices) + " is out of range: POSITION has " +
                               std::to_string(vertexCount) + " vertices");
+    }
   } else {
     indices.resize(vertexCount);
     std::iota(indices.begin(), indices.end(), 0u);
@@ -289,7 +318,9 @@ LocalPrimitive readPrimitive(const Context& ctx, const AccessorReader& reader, c
   const size_t n = indices.size();
   // Strip and fan orders follow glTF 2.0 §3.7.2.1 so that winding, hence the front face, is kept.
   if (d.mode == kTriangles) {
-    if (n % 3 != 0) ctx.fail(element, "TRIANGLES needs a multiple of 3 vertices, got " + std::to_string(n));
+    // The validator only warns (MESH_PRIMITIVE_INCOMPATIBLE_MODE); a GPU draws the whole triangles.
+    if (n % 3 != 0) ctx.warn("TRIANGLES primitives whose vertex count is not a multiple of 3: the last 1 or 2 are not drawn");
+    indices.resize(n - n % 3);
     out.triangles = std::move(indices);
   } else if (d.mode == kTriangleStrip) {
     for (size_t i = 0; i + 2 < n; ++i) {
@@ -385,10 +416,10 @@ Scene loadGltf(const std::string& path) {
   std::vector<Material> materials = parseMaterials(ctx, doc);
   const std::vector<std::vector<PrimitiveDecl>> meshes = parseMeshes(ctx, doc, accessorCount, materials.size());
   const BufferLayout layout = parseBufferLayout(ctx, doc);
+  // glTF 2.0 §3.7.2.1: a primitive without positions is valid and SHOULD not be drawn.
   for (size_t m = 0; m < meshes.size(); ++m)
     for (size_t p = 0; p < meshes[m].size(); ++p)
-      if (!meshes[m][p].position)
-        ctx.fail(indexed("meshes", m) + "." + indexed("primitives", p), "has no POSITION attribute");
+      if (!meshes[m][p].position) ctx.warn("mesh primitives without POSITION are not drawn");
   const std::vector<CameraDecl> cameras = parseCameras(ctx, doc);
   const std::vector<LightDecl> lights = parseLights(ctx, doc);
   NodeCounts counts;
@@ -450,7 +481,9 @@ Scene loadGltf(const std::string& path) {
     }
     if (node.camera) {
       const CameraDecl& decl = cameras[*node.camera];
-      if (!decl.perspective) {
+      if (!decl.known) {
+        // warned where the camera was read
+      } else if (!decl.perspective) {
         ctx.warn(indexed("cameras", *node.camera) + " is orthographic: skipped (relt renders perspective cameras)");
       } else {
         const std::optional<Mat3> frame = rigidFrame(placed.world);
@@ -472,7 +505,7 @@ Scene loadGltf(const std::string& path) {
       const LightDecl& decl = lights[*node.light];
       if (decl.type == "directional") {
         ctx.warn("directional lights are not supported yet; ignored");
-      } else {
+      } else if (decl.type == "point" || decl.type == "spot") {
         PunctualLight light;
         light.name = !decl.name.empty()   ? decl.name
                      : !node.name.empty() ? node.name

@@ -8,6 +8,25 @@ namespace relt::gltf {
 
 namespace {
 
+// glTF 2.0 requires a unit rotation quaternion. The validator's tolerance on its length is the
+// largest error of signed 8-bit quantization (glTF-Validator, unitLengthThresholdVec4); within it
+// the rotation is renormalised, beyond it no reading of the file is the author's.
+constexpr double kUnitQuaternionTolerance = 0.00769;
+
+// The validator's NODE_MATRIX_NON_TRS: glTF requires a matrix that is translation * rotation *
+// scale. relt would draw a projective or sheared matrix as given, other renderers decompose it, so
+// no image is the author's. Columns must be orthogonal (relative tolerance) and nonzero.
+bool decomposableToTrs(const glm::dmat4& m) {
+  if (m[0][3] != 0.0 || m[1][3] != 0.0 || m[2][3] != 0.0 || m[3][3] != 1.0) return false;
+  const glm::dvec3 c[3] = {glm::dvec3(m[0]), glm::dvec3(m[1]), glm::dvec3(m[2])};
+  for (int i = 0; i < 3; ++i) {
+    if (!(glm::length(c[i]) > 0.0)) return false;
+    for (int j = i + 1; j < 3; ++j)
+      if (std::abs(glm::dot(c[i], c[j])) > 1e-4 * glm::length(c[i]) * glm::length(c[j])) return false;
+  }
+  return true;
+}
+
 glm::dmat4 localTransform(const Context& ctx, const Json& o, const std::string& element) {
   const bool hasTrs = getMember(ctx, o, "translation", element) || getMember(ctx, o, "rotation", element) ||
                       getMember(ctx, o, "scale", element);
@@ -17,6 +36,8 @@ glm::dmat4 localTransform(const Context& ctx, const Json& o, const std::string& 
     glm::dmat4 m(1.0);
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) m[c][r] = v[size_t(c * 4 + r)];  // glTF matrices are column-major
+    if (!decomposableToTrs(m))
+      ctx.fail(element, "matrix " + brief(Json(v)) + " is not a translation, rotation and scale (glTF requires one)");
     return m;
   }
   const std::vector<double> t = getNumbers(ctx, o, "translation", element, 3, {0, 0, 0});
@@ -24,7 +45,8 @@ glm::dmat4 localTransform(const Context& ctx, const Json& o, const std::string& 
   const std::vector<double> s = getNumbers(ctx, o, "scale", element, 3, {1, 1, 1});
   glm::dquat rotation(q[3], q[0], q[1], q[2]);  // glTF stores x, y, z, w; glm takes w first
   const double norm = glm::length(rotation);
-  if (!(norm > 1e-6)) ctx.fail(element, "rotation " + brief(Json(q)) + " is not a unit quaternion");
+  if (!(std::abs(norm - 1.0) <= kUnitQuaternionTolerance))
+    ctx.fail(element, "rotation " + brief(Json(q)) + " is not a unit quaternion (length " + brief(Json(norm)) + ")");
   rotation /= norm;  // exporters round; renormalise so the rotation stays rigid
   glm::dmat4 m = glm::mat4_cast(rotation);
   for (int r = 0; r < 3; ++r) {
