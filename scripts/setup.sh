@@ -24,6 +24,8 @@ mkdir -p "$BUILD_DIR"
 cmake -S "$ROOT" -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release > "$BUILD_DIR/configure.log" 2>&1 ||
   { cat "$BUILD_DIR/configure.log"; exit 1; }
 cmake --build "$BUILD_DIR"
+# The Khronos glTF validator, for the loader comparison test (skipped without it; never fails).
+bash "$ROOT/scripts/validator/install.sh" "$BUILD_DIR/validator"
 
 # Open MPI refuses to run as root unless told, and needs --oversubscribe beyond the core count.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
