@@ -102,6 +102,8 @@ void addReplicaOptions(CLI::App& cmd, Options& o) {
            ->check(CLI::IsMember({"resample", "annealing"}))
            ->capture_default_str());
   only(cmd.add_flag("--per-level", r.perLevel, "relt: also write each level's contribution as an EXR layer levelK"));
+  only(cmd.add_option("--trace", o.render.trace,
+                      "relt: write every rank's stepping time of each group round (the scaling model's input) as JSON"));
   only(cmd.add_option("--relaxed-eps", r.family.relaxedEps1, "relt relaxed: eps_1 as a multiple of the mean of I")
            ->check(kPositive)
            ->capture_default_str());

@@ -132,8 +132,8 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   RoundLoopHooks hooks;
   hooks.elapsed = [&] { return resumed.elapsed + since(start); };
   hooks.stop = [] { return stopSignalled(); };
-  // The scaling model replays the stepping times (stats.json); at most about 2^20 numbers in all.
-  if (!settings.stats.empty()) hooks.traceLimit = std::max<size_t>(1024, (size_t(1) << 20) / size_t(session.size()));
+  // The scaling model replays the stepping times (--trace); at most about 2^20 numbers in all.
+  if (!settings.trace.empty()) hooks.traceLimit = std::max<size_t>(1024, (size_t(1) << 20) / size_t(session.size()));
   hooks.roundDone = [&](uint64_t rounds, double elapsed, bool more) {
     if (session.isRoot() && elapsed - lastPrint >= 1.0) {
       lastPrint = elapsed;

@@ -33,7 +33,7 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 void checkOutputsWritable(const Session& session, const RenderSettings& s) {
   std::string problem;
   if (session.isRoot()) {
-    for (const std::string& path : {s.output, s.png, s.stats}) {
+    for (const std::string& path : {s.output, s.png, s.stats, s.trace}) {
       if (path.empty()) continue;
       const std::filesystem::path dir = std::filesystem::path(path).parent_path();
       const std::string d = dir.empty() ? "." : dir.string();
@@ -208,7 +208,6 @@ nlohmann::json reltStats(const mpi::ReltOutcome& o) {
   j["group_round_step_seconds_mean_per_rank"] = o.stepMean;
   j["group_round_step_seconds_deviation_per_rank"] = o.stepDeviation;
   j["group_round_finish_seconds_mean_per_rank"] = o.finishMean;
-  j["group_round_step_seconds_trace_per_rank"] = o.stepTrace;
   nlohmann::json levels = nlohmann::json::array();
   for (int k = 0; k < o.levels; ++k) {
     const LevelCounters& c = o.perLevel[size_t(k)];
@@ -278,6 +277,8 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
   j["relt"] = reltStats(o);
   if (resumed) j["resumed_from"] = {{"checkpoint", resumed->file}, {"progress", resumed->progress}};
   writeOutputs(settings, image, j, wallStart, out);
+  if (!settings.trace.empty())  // the scaling model's input; large, so apart from stats.json
+    writeFileAtomically(settings.trace, nlohmann::json{{"group_round_step_seconds_per_rank", o.stepTrace}}.dump() + "\n");
   std::fprintf(stderr, "relt: %llu mutations in %llu rounds, %.2f s, %.3f M mutations/s, %llu round trips; wrote %s\n",
                static_cast<unsigned long long>(mutations), static_cast<unsigned long long>(o.rounds), g.renderSeconds,
                j["mutations_per_second"].get<double>() * 1e-6, static_cast<unsigned long long>(o.roundTrips),

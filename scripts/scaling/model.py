@@ -57,6 +57,7 @@ import round_sim  # noqa: E402
 ap = argparse.ArgumentParser()
 ap.add_argument("stats")
 ap.add_argument("collectives")
+ap.add_argument("--trace", required=True, help="the render's --trace file (stepping time of every group round)")
 ap.add_argument("out_md")
 ap.add_argument("out_png")
 ap.add_argument("--alpha", type=float, default=2e-6)
@@ -78,7 +79,7 @@ levels = len(r["levels"])
 groups = r["groups"]
 interval = s["exchange_interval"]
 measured_chains = s["ladders"] * levels / ranks0
-traces = [np.asarray(t, dtype=float) for t in r["group_round_step_seconds_trace_per_rank"]]
+traces = [np.asarray(t, dtype=float) for t in json.load(open(a.trace))["group_round_step_seconds_per_rank"]]
 t_g0 = float(np.mean([t.mean() for t in traces]))  # stepping a group round
 sigma0 = float(np.mean([t.std() for t in traces]))
 t_ladder = sum(r["group_round_finish_seconds_mean_per_rank"]) / ranks0 / (s["ladders"] / groups)

@@ -26,9 +26,9 @@ lengths="$ROOT/docs/img/scaling-model-length.md"
   echo "|---|---|---|---|---|---|"
 } > "$lengths"
 for k in $(seq "$FIRST" $((FIRST + RUNS - 1))); do
-  "${MPIRUN[@]}" -np 2 "$BUILD_DIR/relt" render "$ROOT/scenes/$SCENE.gltf" -o "$OUT/model.exr" --stats "$OUT/model-$k.json" \
+  "${MPIRUN[@]}" -np 2 "$BUILD_DIR/relt" render "$ROOT/scenes/$SCENE.gltf" -o "$OUT/model.exr" --stats "$OUT/model-$k.json" --trace "$OUT/trace-$k.json" \
     --integrator relt --mutations-per-pixel "$MPP" --placement spread 2>/dev/null
-  /usr/bin/python3 "$ROOT/scripts/scaling/model.py" "$OUT/model-$k.json" "$OUT/collectives.jsonl" \
+  /usr/bin/python3 "$ROOT/scripts/scaling/model.py" "$OUT/model-$k.json" "$OUT/collectives.jsonl" --trace "$OUT/trace-$k.json" \
     "$ROOT/docs/img/scaling-model-$k.md" "$ROOT/docs/img/scaling-model-$k.png" \
     --alpha "${ALPHA:-2e-6}" --bandwidth "${BANDWIDTH:-12e9}" --summary "$summary" --length-summary "$lengths" --label "$k" > /dev/null
 done

@@ -2,7 +2,7 @@
 test_round_sim.py).
 
 A trace is one rank's stepping time of each group round in loop order (group = index mod G), as
-relt writes it to stats.json (group_round_step_seconds_trace_per_rank). The simulation follows
+relt writes it with --trace FILE (group_round_step_seconds_per_rank). The simulation follows
 src/replica/round_loop.cpp: a rank steps group g of round R once group g's collective of round
 R - 1 has completed, and that collective completes when the last rank has posted it (plus a
 latency). Blocking is the design's original protocol: all groups, then one collective that every

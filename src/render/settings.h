@@ -26,6 +26,7 @@ struct RenderSettings {
   std::string output;             // .exr
   std::string png;                // optional preview
   std::string stats;              // optional stats.json
+  std::string trace;              // relt, optional: every rank's stepping time of each group round (JSON)
   Integrator integrator = Integrator::Bdpt;
   std::optional<int> spp;         // samples per pixel (default when neither spp nor time: 16)
   std::optional<double> seconds;  // time budget

@@ -223,3 +223,24 @@ TEST(Cli, StatsSettingsAreTheOnesGiven) {
   EXPECT_EQ(s["large_step_probability"].dump(), "0.3");
   EXPECT_EQ(s["small_step"].dump(), "[0.0009765625,0.015625]");
 }
+
+// The stepping trace (one number per rank and group round) goes to its own file, on request; it
+// made stats.json grow with the render.
+TEST(Cli, ReltWritesTheSteppingTraceApartOnRequest) {
+  const std::string dir = makeTempDir("cli-trace");
+  const std::string base = reltBinary() + " render " + kScene + " -o " + dir + "/r.exr --integrator relt --ladders 2 "
+                           "--mutations-per-pixel 2 --width 24 --height 16 --stats " + dir;
+  ASSERT_EQ(runCommand(base + "/plain.json").exitCode, 0);
+  const CommandResult r = runCommand(base + "/traced.json --trace " + dir + "/trace.json");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* name : {"/plain.json", "/traced.json"}) {
+    std::ifstream stats(dir + name);
+    EXPECT_FALSE(nlohmann::json::parse(stats)["relt"].contains("group_round_step_seconds_trace_per_rank")) << name;
+  }
+  std::ifstream traceFile(dir + "/trace.json");
+  const nlohmann::json trace = nlohmann::json::parse(traceFile)["group_round_step_seconds_per_rank"];
+  ASSERT_EQ(trace.size(), 1u) << "one rank";
+  EXPECT_GT(trace[0].size(), 0u);
+  EXPECT_NE(runCommand(reltBinary() + " render " + kScene + " -o " + dir + "/p.exr --trace " + dir + "/t.json").exitCode, 0)
+      << "relt only";
+}
