@@ -16,7 +16,7 @@ void Film::addSplat(const Vec2& film, const Color& value, double weight) {
 }
 
 bool Film::addSample(const PathSample& sample, double weight) {
-  if (!sample.finite()) {
+  if (!sample.finite() || !std::isfinite(weight)) {
     ++dropped_;
     return false;
   }

@@ -15,8 +15,8 @@ class Film {
   int width() const { return width_; }
   int height() const { return height_; }
 
-  // Adds every splat of a sample scaled by `weight`. A sample with any NaN or infinite value is
-  // dropped whole and counted: one bad number must not poison a pixel.
+  // Adds every splat of a sample scaled by `weight`. A sample with any NaN or infinite value, or
+  // a weight that is not finite, is dropped whole and counted: one bad number must not poison a pixel.
   bool addSample(const PathSample& sample, double weight = 1.0);
   void addSplat(const Vec2& film, const Color& value, double weight);
   // Adds weight x another film's sums (same size) and its dropped-sample count.

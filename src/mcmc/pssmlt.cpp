@@ -47,9 +47,10 @@ void McmcChain::finishStep(bool large, float proposed, Film& film) {
   if (large) counters_.largeTargetSum += proposed;
   if (!(proposed > 0.0f)) ++counters_.invalidProposals;
   // Expected values (thesis digest §2.7): the current state with 1 - a, the proposal with a, each
-  // over its own target (the density the chain samples it with, up to b).
-  if (target_ > 0.0f && a < 1.0f) film.addSample(current_, (1.0 - a) / target_);
-  if (a > 0.0f) film.addSample(proposal_, a / proposed);
+  // over its own target (the density the chain samples it with, up to b). In double: a target
+  // below 2^-126 (mmlt's long paths) is a subnormal float whose reciprocal overflows float.
+  if (target_ > 0.0f && a < 1.0f) film.addSample(current_, (1.0 - double(a)) / double(target_));
+  if (a > 0.0f) film.addSample(proposal_, double(a) / double(proposed));
   if (rng_.uniform() < a) {
     u_.accept();
     std::swap(current_, proposal_);
