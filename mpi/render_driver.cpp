@@ -69,16 +69,29 @@ void checkCheckpointFolders(const Session& session, const CheckpointPlan& plan) 
   shareRootProblem(problem);
 }
 
-// EXR (with optional extra layers) and optional PNG, each written atomically. Root only.
-void writeImages(const RenderSettings& settings, const Image& image, const std::vector<ImageLayer>& layers = {}) {
+// Pixels zeroed by writeImages over the render (snapshots and the final image).
+uint64_t nonFinitePixelsZeroed = 0;
+
+// EXR (with optional extra layers) and optional PNG, each written atomically. Root only. Every
+// image goes out through here, so here a NaN or infinite pixel is written as 0, counted and
+// reported: a safety net, the integrators must not make them. Returns the image as written.
+Image writeImages(const RenderSettings& settings, Image image, std::vector<ImageLayer> layers = {}) {
+  uint64_t zeroed = zeroNonFinitePixels(image);
+  for (ImageLayer& layer : layers) zeroed += zeroNonFinitePixels(layer.image);
+  if (zeroed > 0)
+    std::fprintf(stderr, "relt: warning: %llu non-finite pixels written as 0 to %s (an integrator made them)\n",
+                 static_cast<unsigned long long>(zeroed), settings.output.c_str());
+  nonFinitePixelsZeroed += zeroed;
   writeExr(settings.output, image, layers);
   if (!settings.png.empty()) writePng(settings.png, image, settings.exposure);
+  return image;
 }
 
 // The images and the stats (with the wall time added). Root only.
 void writeOutputs(const RenderSettings& settings, const Image& image, nlohmann::json stats, Clock::time_point wallStart,
                   const std::vector<ImageLayer>& layers = {}) {
-  writeImages(settings, image, layers);
+  stats["image_mean"] = writeImages(settings, image, layers).mean();  // of the image as written
+  stats["nonfinite_pixels_zeroed"] = nonFinitePixelsZeroed;
   stats["interrupted"] = stopAgreed();
   if (checkpointTally().written > 0)
     stats["checkpoints"] = {{"written", checkpointTally().written}, {"seconds", checkpointTally().seconds}};

@@ -27,6 +27,17 @@ double Image::mean() const {
   return rgb.empty() ? 0.0 : sum / static_cast<double>(rgb.size());
 }
 
+uint64_t zeroNonFinitePixels(Image& image) {
+  uint64_t changed = 0;
+  for (size_t i = 0; i + 2 < image.rgb.size(); i += 3) {
+    float* px = &image.rgb[i];
+    if (std::isfinite(px[0]) && std::isfinite(px[1]) && std::isfinite(px[2])) continue;
+    px[0] = px[1] = px[2] = 0.0f;
+    ++changed;
+  }
+  return changed;
+}
+
 void Image::add(const Image& other) {
   for (size_t i = 0; i < rgb.size() && i < other.rgb.size(); ++i) rgb[i] += other.rgb[i];
 }

@@ -2,6 +2,7 @@
 // Float RGB images and their files: OpenEXR (float channels) and PNG previews (sRGB, exposure).
 // Every write goes to a temporary file in the same directory and is renamed into place, so a
 // reader never sees a partial image.
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,10 @@ struct Image {
   double mean() const;  // mean over pixels and channels
   void add(const Image& other);  // pixel by pixel; same size
 };
+
+// The last check before an image is written: every pixel with a channel that is NaN or infinite
+// becomes black. Returns how many pixels it changed (the integrators must not make any).
+uint64_t zeroNonFinitePixels(Image& image);
 
 // A named extra layer of an EXR (channels NAME.R, NAME.G, NAME.B), e.g. one per replica level.
 struct ImageLayer {

@@ -188,3 +188,12 @@ TEST(Image, ExposureScalesByPowersOfTwo) {
   EXPECT_EQ(decodePng(dir + "/d.png", w, h), std::vector<unsigned char>(3, 255));
   EXPECT_EQ(decodePng(dir + "/e.png", w, h), std::vector<unsigned char>(3, 71));
 }
+
+TEST(Image, NonFinitePixelsAreZeroedAndCountedBeforeWriting) {
+  Image image(3, 1);
+  image.rgb = {1.0f, 2.0f, 3.0f, std::numeric_limits<float>::quiet_NaN(), 0.5f, 0.5f,
+               0.25f, std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
+  EXPECT_EQ(zeroNonFinitePixels(image), 2u);
+  EXPECT_EQ(image.rgb, (std::vector<float>{1.0f, 2.0f, 3.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f}));
+  EXPECT_EQ(zeroNonFinitePixels(image), 0u);  // finite pixels, negative or not, are left alone
+}
