@@ -44,6 +44,9 @@ void expectFurnaceWithinOnePercent(const RenderSettings& settings) {
   EXPECT_NEAR(image.mean(), expected, 0.01 * expected);
 }
 
+// The furnace's pixel value with at most `depth` segments (scenes/README.md).
+double furnaceValue(int depth) { return (1.0 - std::pow(0.5, depth)) / (1.0 - 0.5); }
+
 }  // namespace
 
 TEST_P(IntegratorTest, FurnaceMatchesAnalyticValueWithinOnePercent) {
@@ -186,4 +189,26 @@ TEST(ReltFurnace, TemperedFamilyMatchesAnalyticValueWithinOnePercent) {
   RenderSettings s = settingsFor(Integrator::Relt, 7, 16, 32);
   s.replica.family.kind = FamilyKind::Tempered;
   expectFurnaceWithinOnePercent(s);
+}
+
+// mmlt with 200 segments at most, the reported case: past about 127 segments a path's contribution
+// (2^-(d-1)) is a subnormal float, past 145 it is 0 (those lengths get no chain, and carry less
+// than 2^-144 of the image). Their chains' splats overflowed: every pixel NaN. The image must be
+// the analytic value: each seed within 1 % (the furnace tolerance above) and the mean of the seeds
+// within 4 standard errors, the standard error estimated from the seeds' spread (about 0.15 %;
+// the bootstrap gives each of the 200 lengths only 500 samples, so b varies by about 0.3 %).
+TEST(MmltFurnace, DeepMaxDepthWithFewChainsPerLengthMatchesAnalyticValue) {
+  const std::string path = sourcePath("scenes/furnace.gltf");
+  const double expected = furnaceValue(200);
+  std::vector<double> means;
+  for (uint64_t seed : {1, 2, 3, 4}) {
+    RenderSettings s = settingsFor(Integrator::Mmlt, seed, 64, 32);
+    s.chains = 256;  // one or two chains for most of the 144 lengths with a target
+    s.maxDepth = 200;
+    const Image image = renderInProcess(path, s);
+    means.push_back(image.mean());
+    EXPECT_NEAR(image.mean(), expected, 0.01 * expected) << "seed " << seed;
+  }
+  const Estimate e = meanAndStandardError(means);
+  EXPECT_LT(std::abs(e.mean - expected), 4.0 * e.stderror) << e.mean << " +- " << e.stderror << " against " << expected;
 }
