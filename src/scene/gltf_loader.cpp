@@ -46,7 +46,7 @@ const std::map<std::string, std::string> kExtensionPurpose = {
 
 const char* kModeNames[] = {"POINTS",    "LINES",          "LINE_LOOP",   "LINE_STRIP",
                             "TRIANGLES", "TRIANGLE_STRIP", "TRIANGLE_FAN"};
-constexpr uint32_t kTriangles = 4, kTriangleStrip = 5, kTriangleFan = 6, kUnknownMode = 7;
+constexpr uint32_t kTriangles = 4, kTriangleStrip = 5, kTriangleFan = 6;
 
 void checkAsset(const Context& ctx, const Json& doc) {
   const Json* asset = getObject(ctx, doc, "asset", "");
@@ -111,13 +111,12 @@ std::vector<std::vector<PrimitiveDecl>> parseMeshes(Context& ctx, const Json& do
       PrimitiveDecl d;
       const Json* attributes = getObject(ctx, prim, "attributes", pe);
       if (!attributes) ctx.fail(pe, "attributes is missing");
-      // Points and lines are valid glTF that a renderer of surfaces cannot draw; an unknown mode
-      // is only a warning for the validator. Both are left undrawn rather than refused.
+      // Points and lines are valid glTF that a renderer of surfaces cannot draw: not drawn.
       const uint64_t mode = getUInt(ctx, prim, "mode", pe).value_or(kTriangles);
-      if (mode > kTriangleFan) ctx.warn(pe + " has mode " + std::to_string(mode) + ", which glTF 2.0 does not define: not drawn");
+      if (mode > kTriangleFan) ctx.fail(pe, "mode " + std::to_string(mode) + " is not a valid primitive mode");
       if (mode < kTriangles)
         ctx.warn(std::string("primitives of mode ") + kModeNames[mode] + " are not drawn (relt renders triangles)");
-      d.mode = static_cast<uint32_t>(std::min<uint64_t>(mode, kUnknownMode));
+      d.mode = static_cast<uint32_t>(mode);
       d.indices = getIndex(ctx, prim, "indices", pe, "accessors", accessorCount);
       d.material = getIndex(ctx, prim, "material", pe, "materials", materialCount);
       for (auto it = attributes->begin(); it != attributes->end(); ++it) {
@@ -264,72 +263,94 @@ struct LocalPrimitive {
   std::optional<uint32_t> material;
 };
 
+// Shading normals, unit length or zero (Scene::normals: "use the geometric normal").
+std::vector<Vec3> readNormals(Context& ctx, const AccessorReader& reader, uint32_t accessor, const std::string& element) {
+  std::vector<Vec3> normals = reader.readVec3(accessor, element, "NORMAL");
+  for (size_t v = 0; v < normals.size(); ++v) {
+    // NaN or infinite normals are corrupt data (the validator's ACCESSOR_INVALID_FLOAT), not a
+    // direction to fall back from.
+    if (!isFinite(normals[v]))
+      ctx.fail(element, "NORMAL (" + indexed("accessors", accessor) + ") has a non-finite value at vertex " +
+                            std::to_string(v));
+    const float len = glm::length(normals[v]);
+    // The validator's tolerance (unitLengthThresholdVec3); relt renormalises either way.
+    if (!(std::abs(len - 1.0f) <= 0.00674f))
+      ctx.warn("NORMAL vectors that are not of unit length are renormalised (zero ones: the geometric normal)");
+    normals[v] = (std::isfinite(len) && len > 0.0f) ? normals[v] / len : Vec3(0.0f);
+  }
+  return normals;
+}
+
+// Vertex indices, checked against the vertex count when the primitive has positions.
+std::vector<uint32_t> readIndices(const Context& ctx, const AccessorReader& reader, uint32_t accessor,
+                                  std::optional<size_t> vertexCount, const std::string& element) {
+  std::vector<uint32_t> indices = reader.readIndices(accessor, element);
+  const uint32_t restart = reader.restartValue(accessor);
+  for (size_t i = 0; i < indices.size(); ++i) {
+    // glTF 2.0 §3.7.2.1: indices MUST NOT hold the primitive restart value, which a GPU with
+    // restart enabled would read as a break in the primitive.
+    if (indices[i] == restart)
+      ctx.fail(element, "index " + std::to_string(restart) + " at position " + std::to_string(i) + " of " +
+                            indexed("accessors", accessor) +
+                            " is the primitive restart value of its component type, which glTF forbids");
+    if (vertexCount && indices[i] >= *vertexCount)
+      ctx.fail(element, "index " + std::to_string(indices[i]) + " at position " + std::to_string(i) + " of " +
+                            indexed("accessors", accessor) + " is out of range: POSITION has " +
+                            std::to_string(*vertexCount) + " vertices");
+  }
+  return indices;
+}
+
+// Triangles from the mode's vertex order; strip and fan orders follow glTF 2.0 §3.7.2.1 so that
+// winding, hence the front face, is kept.
+std::vector<uint32_t> triangulate(Context& ctx, uint32_t mode, std::vector<uint32_t> indices) {
+  const size_t n = indices.size();
+  std::vector<uint32_t> triangles;
+  if (mode == kTriangles) {
+    // The validator only warns (MESH_PRIMITIVE_INCOMPATIBLE_MODE); a GPU draws the whole triangles.
+    if (n % 3 != 0) ctx.warn("TRIANGLES primitives whose vertex count is not a multiple of 3: the last 1 or 2 are not drawn");
+    indices.resize(n - n % 3);
+    triangles = std::move(indices);
+  } else if (mode == kTriangleStrip) {
+    for (size_t i = 0; i + 2 < n; ++i)
+      triangles.insert(triangles.end(), {indices[i], indices[i + 1 + i % 2], indices[i + 2 - i % 2]});
+  } else if (mode == kTriangleFan) {
+    for (size_t i = 0; i + 2 < n; ++i) triangles.insert(triangles.end(), {indices[i + 1], indices[i + 2], indices[0]});
+  }
+  return triangles;  // points and lines: none (warned)
+}
+
+// A primitive that is not drawn (no POSITION, points, lines) has its data checked all the same,
+// as a mesh that no node uses has.
 LocalPrimitive readPrimitive(Context& ctx, const AccessorReader& reader, const PrimitiveDecl& d,
                              const std::string& element) {
   LocalPrimitive out;
   out.material = d.material;
-  if (!d.position || d.mode < kTriangles || d.mode > kTriangleFan) return out;  // not drawn (warned)
-  out.positions = reader.readVec3(*d.position, element, "POSITION");
-  for (size_t v = 0; v < out.positions.size(); ++v)
-    if (!isFinite(out.positions[v]))
-      ctx.fail(element, "POSITION (" + indexed("accessors", *d.position) + ") has a non-finite value at vertex " +
-                            std::to_string(v));
-  const size_t vertexCount = out.positions.size();
-  if (vertexCount > UINT32_MAX) ctx.fail(element, "has too many vertices");
-  if (d.normal) {
-    out.normals = reader.readVec3(*d.normal, element, "NORMAL");
-    if (out.normals.size() != vertexCount)
-      ctx.fail(element, "NORMAL has " + std::to_string(out.normals.size()) + " entries but POSITION has " +
-                            std::to_string(vertexCount));
-    for (size_t v = 0; v < vertexCount; ++v) {
-      // NaN or infinite normals are corrupt data (the validator's ACCESSOR_INVALID_FLOAT), not a
-      // direction to fall back from.
-      if (!isFinite(out.normals[v]))
-        ctx.fail(element, "NORMAL (" + indexed("accessors", *d.normal) + ") has a non-finite value at vertex " +
+  std::optional<size_t> vertexCount;
+  if (d.position) {
+    out.positions = reader.readVec3(*d.position, element, "POSITION");
+    for (size_t v = 0; v < out.positions.size(); ++v)
+      if (!isFinite(out.positions[v]))
+        ctx.fail(element, "POSITION (" + indexed("accessors", *d.position) + ") has a non-finite value at vertex " +
                               std::to_string(v));
-      const float len = glm::length(out.normals[v]);
-      // The validator's tolerance (unitLengthThresholdVec3); relt renormalises either way.
-      if (!(std::abs(len - 1.0f) <= 0.00674f))
-        ctx.warn("NORMAL vectors that are not of unit length are renormalised (zero ones: the geometric normal)");
-      // A zero entry means "use the geometric normal" (Scene::normals), the safe fallback.
-      out.normals[v] = (std::isfinite(len) && len > 0.0f) ? out.normals[v] / len : Vec3(0.0f);
-    }
+    vertexCount = out.positions.size();
+    if (*vertexCount > UINT32_MAX) ctx.fail(element, "has too many vertices");
+  }
+  if (d.normal) {
+    out.normals = readNormals(ctx, reader, *d.normal, element);
+    if (vertexCount && out.normals.size() != *vertexCount)
+      ctx.fail(element, "NORMAL has " + std::to_string(out.normals.size()) + " entries but POSITION has " +
+                            std::to_string(*vertexCount));
   }
   std::vector<uint32_t> indices;
   if (d.indices) {
-    indices = reader.readIndices(*d.indices, element);
-    const uint32_t restart = reader.restartValue(*d.indices);
-    for (size_t i = 0; i < indices.size(); ++i) {
-      // glTF 2.0 §3.7.2.1: indices MUST NOT hold the primitive restart value, which a GPU with
-      // restart enabled would read as a break in the primitive.
-      if (indices[i] == restart)
-        ctx.fail(element, "index " + std::to_string(restart) + " at position " + std::to_string(i) + " of " +
-                              indexed("accessors", *d.indices) +
-                              " is the primitive restart value of its component type, which glTF forbids");
-      if (indices[i] >= vertexCount)
-        ctx.fail(element, "index " + std::to_string(indices[i]) + " at position " + std::to_string(i) + " of " +
-                              indexed("accessors", *d.indices) + " is out of range: POSITION has " +
-                              std::to_string(vertexCount) + " vertices");
-    }
+    indices = readIndices(ctx, reader, *d.indices, vertexCount, element);
   } else {
-    indices.resize(vertexCount);
+    indices.resize(vertexCount.value_or(0));
     std::iota(indices.begin(), indices.end(), 0u);
   }
-  const size_t n = indices.size();
-  // Strip and fan orders follow glTF 2.0 §3.7.2.1 so that winding, hence the front face, is kept.
-  if (d.mode == kTriangles) {
-    // The validator only warns (MESH_PRIMITIVE_INCOMPATIBLE_MODE); a GPU draws the whole triangles.
-    if (n % 3 != 0) ctx.warn("TRIANGLES primitives whose vertex count is not a multiple of 3: the last 1 or 2 are not drawn");
-    indices.resize(n - n % 3);
-    out.triangles = std::move(indices);
-  } else if (d.mode == kTriangleStrip) {
-    for (size_t i = 0; i + 2 < n; ++i) {
-      out.triangles.insert(out.triangles.end(), {indices[i], indices[i + 1 + i % 2], indices[i + 2 - i % 2]});
-    }
-  } else {
-    for (size_t i = 0; i + 2 < n; ++i)
-      out.triangles.insert(out.triangles.end(), {indices[i + 1], indices[i + 2], indices[0]});
-  }
+  if (!d.position) return LocalPrimitive{{}, {}, {}, d.material};  // not drawn (warned)
+  out.triangles = triangulate(ctx, d.mode, std::move(indices));
   return out;
 }
 

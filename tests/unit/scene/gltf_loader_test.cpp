@@ -353,14 +353,13 @@ TEST_F(Synthesised, AccessorBeyondItsBufferViewIsRejected) {
   EXPECT_TRUE(contains(loadError(doc), "bufferViews[0]: bytes [0, 400) lie outside buffers[0]"));
 }
 
-// Points and lines are valid glTF (and an unknown mode only a warning for the validator): such
-// primitives are not drawn, the rest of the file is.
+// Points and lines are valid glTF: such primitives are not drawn, the rest of the file is, and
+// their data is checked as any other (an index out of range is an error, as for the validator).
 TEST_F(Synthesised, NonTriangleModesAreNotDrawn) {
   const std::vector<std::pair<int, std::string>> modes = {{0, "primitives of mode POINTS are not drawn"},
                                                           {1, "primitives of mode LINES are not drawn"},
                                                           {2, "primitives of mode LINE_LOOP are not drawn"},
-                                                          {3, "primitives of mode LINE_STRIP are not drawn"},
-                                                          {9, "meshes[0].primitives[0] has mode 9, which glTF 2.0 does not define"}};
+                                                          {3, "primitives of mode LINE_STRIP are not drawn"}};
   for (const auto& [mode, warning] : modes) {
     GltfBuilder b;
     b.node({{"mesh", b.triangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {}, -1, mode)}});
@@ -369,6 +368,9 @@ TEST_F(Synthesised, NonTriangleModesAreNotDrawn) {
     EXPECT_EQ(s.triangles.size(), 1u) << mode;
     EXPECT_TRUE(hasWarning(s, warning)) << warning;
   }
+  GltfBuilder b;
+  b.node({{"mesh", b.triangleMesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 1, 3}, -1, 1)}});
+  EXPECT_TRUE(contains(loadError(b.finish()), "index 3 at position 2 of accessors[1] is out of range"));
 }
 
 TEST_F(Synthesised, StripAndFanBecomeFrontFacingTriangles) {
@@ -919,6 +921,7 @@ TEST_F(Synthesised, WrongJsonTypesAreRejectedNotMisread) {
       {[](Json& d) { d["accessors"][0]["componentType"] = 5124; }, "componentType 5124 is not a valid"},
       {[](Json& d) { d["meshes"][0]["primitives"] = Json::array(); }, "meshes[0]: has no primitives"},
       {[](Json& d) { d["bufferViews"][0]["byteStride"] = 6; }, "byteStride 6 must be a multiple of 4"},
+      {[](Json& d) { d["meshes"][0]["primitives"][0]["mode"] = 9; }, "mode 9 is not a valid primitive mode"},
       {[](Json& d) { d["asset"] = "2.0"; }, "asset must be a JSON object"},
       {[](Json& d) { d["extensionsRequired"] = Json::array({7}); }, "extensionsRequired[0]: must be a string"},
   };
