@@ -125,10 +125,10 @@ double allreduceMax(double value) {
 }
 
 Agreement agree(double elapsed) {
-  double mine[2] = {elapsed, stopSignalled() ? 1.0 : 0.0}, all[2];
-  timed([&] { MPI_Allreduce(mine, all, 2, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD); });
+  double mine[3] = {elapsed, stopSignalled() ? 1.0 : 0.0, takeSaveRequest() ? 1.0 : 0.0}, all[3];
+  timed([&] { MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD); });
   if (all[1] > 0.0) markStopAgreed();
-  return {all[0], all[1] > 0.0};
+  return {all[0], all[1] > 0.0, all[2] > 0.0};
 }
 
 double allreduceSum(double value) {

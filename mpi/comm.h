@@ -34,11 +34,13 @@ double allreduceMax(double value);
 double allreduceSum(double value);
 uint64_t allreduceSum(uint64_t value);
 int allreduceMax(int value);
-// What the ranks decide together after a pass or round: the largest elapsed time, and whether any
-// rank was signalled to stop (then stopAgreed() in interrupt.h holds from here on).
+// What the ranks decide together after a pass or round: the largest elapsed time, whether any
+// rank was signalled to stop (then stopAgreed() in interrupt.h holds from here on), and whether
+// any was asked to save (SIGCONT: write the image so far and a checkpoint now).
 struct Agreement {
   double elapsed = 0.0;
   bool stop = false;
+  bool save = false;
 };
 Agreement agree(double elapsed);
 // Wall-clock seconds spent inside collectives by this rank, accumulated by the functions above.

@@ -6,11 +6,19 @@
 // a flag, the render loops read it at their next round or pass and agree on it with the other
 // ranks, so all stop after the same round, reduce and write the image so far. A second signal ends
 // the process at once.
+//
+// Open MPI's mpirun, asked to stop (SIGINT or SIGTERM), first sends the ranks SIGCONT, a second
+// later SIGTERM and another second later SIGKILL (odls_base_sigkill_timeout); batch systems do
+// likewise. So SIGCONT asks the ranks to save: they agree on it like a stop, and write the image
+// so far and a checkpoint after the same round, then go on. A SIGCONT that resumes a stopped
+// process asks the same: it costs one write.
 namespace relt::mpi {
 
 void installStopHandlers();
 // This rank received a stop signal.
 bool stopSignalled();
+// This rank received SIGCONT since it last took the request (takes it: true once per signal).
+bool takeSaveRequest();
 // The ranks agreed to stop (set by agree() in comm.h); the render writes what it has and exits 0.
 bool stopAgreed();
 void markStopAgreed();

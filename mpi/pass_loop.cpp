@@ -16,7 +16,7 @@ int runPasses(const Session& session, const RenderSettings& settings,
               const std::function<void(uint64_t pass, int row)>& renderUnit,
               const std::function<double(double elapsed)>& rate,
               const std::function<void(int passes)>& snapshot, const PassStart& start,
-              const std::function<void(int passes, double elapsed, bool more)>& passDone) {
+              const std::function<void(int passes, double elapsed, bool more, bool save)>& passDone) {
   using Clock = std::chrono::steady_clock;
   const auto clockStart = Clock::now();
   auto since = [&] { return start.elapsed + std::chrono::duration<double>(Clock::now() - clockStart).count(); };
@@ -42,7 +42,8 @@ int runPasses(const Session& session, const RenderSettings& settings,
     pace.add(elapsed - lastElapsed);
     lastElapsed = elapsed;
     const bool more = !agreed.stop && another();
-    if (snapshots && snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more)) {
+    const bool save = agreed.save && more;  // the last pass is written anyway
+    if (snapshot && (save || (snapshots && snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more)))) {
       lastSnapshot = elapsed;
       snapshot(passes);
     }
@@ -51,7 +52,7 @@ int runPasses(const Session& session, const RenderSettings& settings,
       const double fraction = timed ? std::min(1.0, elapsed / *settings.seconds) : double(passes) / spp;
       std::fprintf(stderr, tty ? "\r%s" : "%s\n", progressLine(fraction, elapsed, rate(elapsed)).c_str());
     }
-    if (passDone) passDone(passes, elapsed, more);
+    if (passDone) passDone(passes, elapsed, more, save);
     if (!more) break;
   }
   if (rate && session.isRoot() && tty) std::fprintf(stderr, "\n");

@@ -89,7 +89,9 @@ PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const Render
       std::fprintf(stderr, tty ? "\r%s" : "%s\n",
                    progressLine(schedule.fraction(rounds, elapsed), elapsed, rate, "mutations").c_str());
     }
-    if (snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, schedule.anotherRound(rounds, elapsed, pace.typical()))) {
+    // A save request (interrupt.h): the image so far now, as a snapshot.
+    const bool more = schedule.anotherRound(rounds, elapsed, pace.typical());
+    if ((agreed.save && more) || snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more)) {
       lastSnapshot = elapsed;
       std::vector<ChainCounters> perDepth;
       const double b = normaliser(&perDepth, nullptr);

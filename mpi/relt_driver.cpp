@@ -129,9 +129,21 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   const auto start = Clock::now();
   double lastSnapshot = resumed.elapsed, lastPrint = resumed.elapsed, lastCheckpoint = resumed.elapsed;
   const bool tty = ::isatty(STDERR_FILENO);
+  auto writeSnapshot = [&](uint64_t rounds, double elapsed) {
+    lastSnapshot = elapsed;
+    const std::vector<double> sums = reducedSum(films);
+    if (session.isRoot()) snapshot(sums, replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
+  };
+  auto writeCheckpoint = [&](uint64_t rounds, double elapsed) {
+    lastCheckpoint = elapsed;
+    const nlohmann::json progress = {
+        {"rounds", rounds}, {"elapsed", elapsed}, {"steps_per_chain", schedule.stepsAfter(rounds)}};
+    saveCheckpoint(plan, "relt", progress, films, pool.checkpointPart());
+  };
   RoundLoopHooks hooks;
   hooks.elapsed = [&] { return resumed.elapsed + since(start); };
   hooks.stop = [] { return stopSignalled(); };
+  hooks.save = [] { return takeSaveRequest(); };
   // The scaling model replays the stepping times (--trace); at most about 2^20 numbers in all.
   if (!settings.trace.empty()) hooks.traceLimit = std::max<size_t>(1024, (size_t(1) << 20) / size_t(session.size()));
   hooks.roundDone = [&](uint64_t rounds, double elapsed, bool more) {
@@ -141,18 +153,16 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
       std::fprintf(stderr, tty ? "\r%s" : "%s\n",
                    progressLine(schedule.fraction(rounds, elapsed), elapsed, rate, "mutations").c_str());
     }
-    if (snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more)) {
-      lastSnapshot = elapsed;
-      const std::vector<double> sums = reducedSum(films);
-      if (session.isRoot())
-        snapshot(sums, replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
-    }
-    if (!plan.dir.empty() && checkpointDue(plan.every, elapsed, lastCheckpoint, more)) {
-      lastCheckpoint = elapsed;
-      const nlohmann::json progress = {
-          {"rounds", rounds}, {"elapsed", elapsed}, {"steps_per_chain", schedule.stepsAfter(rounds)}};
-      saveCheckpoint(plan, "relt", progress, films, pool.checkpointPart());
-    }
+    if (snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more)) writeSnapshot(rounds, elapsed);
+    if (!plan.dir.empty() && checkpointDue(plan.every, elapsed, lastCheckpoint, more)) writeCheckpoint(rounds, elapsed);
+  };
+  // Ranks whose requests travel in different groups' messages agree on them a round apart: one
+  // save for them all (the agreed time is the same on every rank).
+  hooks.saveNow = [&, lastSave = -1.0](uint64_t rounds, double elapsed) mutable {
+    if (lastSave >= 0.0 && elapsed - lastSave < 0.25) return;
+    lastSave = elapsed;
+    writeSnapshot(rounds, elapsed);
+    if (!plan.dir.empty()) writeCheckpoint(rounds, elapsed);
   };
   MpiTransport transport(session.rank());
   const RoundLoopResult loop = runRoundLoop(pool, schedule, transport, films, hooks, resumed);

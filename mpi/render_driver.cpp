@@ -406,8 +406,8 @@ void runRender(const Session& session, RenderSettings settings, CheckpointPlan p
         ++snapshots;
       },
       start,
-      [&, lastCheckpoint = start.elapsed](int done, double elapsed, bool more) mutable {
-        if (plan.dir.empty() || !checkpointDue(plan.every, elapsed, lastCheckpoint, more)) return;
+      [&, lastCheckpoint = start.elapsed](int done, double elapsed, bool more, bool save) mutable {
+        if (plan.dir.empty() || !(save || checkpointDue(plan.every, elapsed, lastCheckpoint, more))) return;
         lastCheckpoint = elapsed;
         const nlohmann::json progress = {
             {"passes", done}, {"elapsed", elapsed}, {"samples", earlierSamples + allreduceSum(renderer.samples())}};

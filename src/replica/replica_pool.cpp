@@ -151,7 +151,16 @@ size_t ReplicaPool::messageLength(int group, int rank) const {
   return chains * size_t(levels()) + size_t(levels()) + 4;
 }
 
-std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double roundSeconds, bool stop) {
+// The requests travel as one number: bit 0 stop, bit 1 save.
+namespace {
+double requestBits(bool stop, bool save) { return (stop ? 1.0 : 0.0) + (save ? 2.0 : 0.0); }
+void readRequests(double bits, RoundAgreement& agreed) {
+  agreed.stop |= (int(bits) & 1) != 0;
+  agreed.save |= (int(bits) & 2) != 0;
+}
+}  // namespace
+
+std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double roundSeconds, bool stop, bool save) {
   std::vector<double> msg;
   msg.reserve(messageLength(group, rank_));
   LargeStepSums& large = pendingLarge_[size_t(group)];
@@ -163,7 +172,7 @@ std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double 
   }
   msg.push_back(double(large.count));
   msg.push_back(roundSeconds);
-  msg.push_back(stop ? 1.0 : 0.0);
+  msg.push_back(requestBits(stop, save));
   msg.push_back(elapsed);
   posted_[size_t(group)].push_back({large, epoch_, placementVersion_[size_t(group)]});
   large = LargeStepSums(levels());
@@ -217,7 +226,7 @@ RoundAgreement ReplicaPool::finishRound(int group, const std::vector<std::vector
     agreed.fresh = true;
     for (const std::vector<double>& t : tails) {
       agreed.elapsed = std::max(agreed.elapsed, t[t.size() - 1]);
-      agreed.stop |= t[t.size() - 2] > 0.0;
+      readRequests(t[t.size() - 2], agreed);
     }
     held.push_back(std::move(tails));
     for (size_t i = 0; i < due; ++i) {
@@ -284,7 +293,7 @@ void ReplicaPool::readBack(int group, const std::vector<std::vector<double>>& ta
     const std::vector<double>& t = tails[r];
     const size_t n = t.size();
     agreed.elapsed = std::max(agreed.elapsed, t[n - 1]);
-    agreed.stop |= t[n - 2] > 0.0;
+    readRequests(t[n - 2], agreed);
     if (samePlacement) {
       window[r] += t[n - 3];
       squares[r] += t[n - 3] * t[n - 3];

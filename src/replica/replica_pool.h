@@ -35,6 +35,7 @@ std::vector<double> bootstrapFeatures(PssEvaluator& eval, const FamilySettings& 
 struct RoundAgreement {
   double elapsed = 0.0;  // the largest elapsed time
   bool stop = false;     // some rank was asked to stop
+  bool save = false;     // some rank was asked to save (write the image so far and a checkpoint)
   // Spread placement: elapsed and stop are those of this round's messages (every rank waits for
   // them anyway), not of the round read back lag rounds ago. Neither changes the image: a stop or
   // a time budget ends the render at a round that depends on timing in any case.
@@ -69,7 +70,7 @@ class ReplicaPool {
   // This rank's message for the group's collective (`roundSeconds`: time this rank spent in
   // runRound), and the length rank `rank`'s message has (it changes when chains move).
   // `stop`: this rank was asked to stop (a signal); every rank then ends after this round.
-  std::vector<double> roundMessage(int group, double elapsed, double roundSeconds, bool stop = false);
+  std::vector<double> roundMessage(int group, double elapsed, double roundSeconds, bool stop = false, bool save = false);
   size_t messageLength(int group, int rank) const;
   // Ends the group's round `round`: exchanges in its ladders (targets from `messages`, every rank's
   // message of this round in rank order, or with local decisions from the hosted chains) and new

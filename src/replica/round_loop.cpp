@@ -21,7 +21,7 @@ struct Stepper {
   double finishes = 0.0, finishSum = 0.0;                // time in finishRound
   std::vector<double> trace = {};                        // the first hooks.traceLimit stepping times
   std::vector<std::vector<size_t>> lengths = {};         // per group, every rank's message length
-  bool stopRequested = false;
+  bool stopRequested = false, saveRequested = false;
 
   // Message lengths change only when chains move.
   void measureLengths() {
@@ -39,8 +39,8 @@ struct Stepper {
     sum += seconds;
     sumSquares += seconds * seconds;
     if (trace.size() < hooks.traceLimit) trace.push_back(seconds);
-    const bool stop = hooks.stop && hooks.stop();
-    transport.post(group, pool.roundMessage(group, hooks.elapsed(), seconds, stop), lengths[size_t(group)]);
+    const bool stop = hooks.stop && hooks.stop(), save = hooks.save && hooks.save();
+    transport.post(group, pool.roundMessage(group, hooks.elapsed(), seconds, stop, save), lengths[size_t(group)]);
   }
   // Completes a group's collective for round `round`: exchanges, normalisers, chain moves.
   // Returns the agreement; a stop request of any group's round is remembered (every rank reads the
@@ -57,6 +57,7 @@ struct Stepper {
     const auto t0 = Clock::now();
     const RoundAgreement agreed = pool.finishRound(group, messages, round, readBacks);
     stopRequested |= agreed.stop;
+    saveRequested |= agreed.save;
     finishes += 1.0;
     finishSum += std::chrono::duration<double>(Clock::now() - t0).count();
     if (!pool.plannedMoves().empty()) {
@@ -127,6 +128,8 @@ RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule,
         out.stopped = s.stopRequested;
         const bool more = !s.stopRequested && schedule.anotherRound(out.rounds, out.elapsed, clock.pace.typical());
         if (hooks.roundDone) hooks.roundDone(out.rounds, out.elapsed, more);
+        if (s.saveRequested && more && hooks.saveNow) hooks.saveNow(out.rounds, out.elapsed);
+        s.saveRequested = false;
         if (!more) {
           for (int h = 1; h < groups; ++h) s.finish(h, out.rounds - 1);
           // Rounds whose messages were still travelling: every rank takes part, nobody reads them.

@@ -37,6 +37,10 @@ class RoundTransport {
 struct RoundLoopHooks {
   std::function<double()> elapsed;  // this rank's seconds since the loop started
   std::function<bool()> stop;       // this rank was asked to stop (optional): all end after this round
+  std::function<bool()> save;       // this rank was asked to save (optional; true once per request)
+  // After the round at which the ranks agreed on a save request, when another round follows (the
+  // last round's outputs are written anyway): write the image so far and a checkpoint.
+  std::function<void(uint64_t rounds, double elapsed)> saveNow;
   // After each round every group has stepped: rounds so far, the ranks' agreed elapsed time (the
   // latest read back, carried forward by the agreed duration of the rounds not read back yet), and
   // whether another round follows (snapshots, progress, checkpoints: group 0 has finished round
