@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <deque>
 #include <memory>
+#include <optional>
 
 #include "checkpoint/checkpoint.h"
 #include "core/error.h"
@@ -18,6 +19,15 @@
 
 namespace relt::mpi {
 namespace {
+
+// The family's scale of the render a checkpoint continues (a broken part: one named error).
+double checkpointMeanTarget(const Resumed& checkpoint) {
+  try {
+    return ReplicaPool::checkpointMeanTarget(checkpoint.parts);
+  } catch (const std::runtime_error& e) {
+    throw InputError(checkpoint.file, "", e.what());
+  }
+}
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
@@ -96,12 +106,19 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   const ReplicaSettings rs = effectiveReplicaSettings(settings);
   PssEvaluator eval(renderer.context(), settings.width, settings.height);
 
-  // Bootstrap: sample i on rank i mod P; every rank then holds every sample's features.
+  // Bootstrap: sample i on rank i mod P; every rank then holds every sample's features. A resumed
+  // render takes what it needs of it from the checkpoint instead.
   const auto bootstrapStart = Clock::now();
-  std::vector<double> features = bootstrapFeatures(eval, rs.family, settings.seed, rs.bootstrap, session.rank(), session.size());
+  std::optional<ReplicaPool> pooled;
+  if (checkpoint) {
+    pooled.emplace(eval, rs, settings.seed, checkpointMeanTarget(*checkpoint), session.rank(), session.size());
+  } else {
+    std::vector<double> features = bootstrapFeatures(eval, rs.family, settings.seed, rs.bootstrap, session.rank(), session.size());
+    allreduceSum(features);
+    pooled.emplace(eval, rs, settings.seed, features, session.rank(), session.size());
+  }
+  ReplicaPool& pool = *pooled;
   const double bootstrapSeconds = allreduceMax(since(bootstrapStart));
-  allreduceSum(features);
-  ReplicaPool pool(eval, rs, settings.seed, features, session.rank(), session.size());
   films.assign(rs.perLevel ? size_t(pool.levels()) : 1, Film(settings.width, settings.height));
 
   const double area = double(settings.width) * settings.height;
@@ -111,7 +128,7 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   // A bootstrap sample costs about what a mutation does: the agreed first guess of a round's
   // duration, until the lagged elapsed times of two rounds have come back.
   const double perSample = bootstrapSeconds / std::max(1.0, double(rs.bootstrap) / session.size());
-  resumed.secondsPerRound = perSample * rs.exchangeInterval * double(pool.chainCount()) / session.size();
+  if (!checkpoint) resumed.secondsPerRound = perSample * rs.exchangeInterval * double(pool.chainCount()) / session.size();
   if (checkpoint) {
     checkpoint->restoreFilms(films);
     try {
@@ -123,7 +140,7 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
     resumed.elapsed = checkpoint->progress.at("elapsed").get<double>();
     schedule.resumeAt(resumed.rounds, pool.stepsPerChain());
   }
-  // A time budget counts the bootstrap (and a resumed render's repeat of it) too.
+  // A time budget counts the bootstrap too.
   resumed.elapsed += allreduceMax(since(bootstrapStart));
   const double collectiveBefore = collectiveSeconds();
   const auto start = Clock::now();

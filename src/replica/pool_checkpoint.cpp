@@ -7,7 +7,8 @@
 namespace relt {
 namespace {
 
-constexpr uint64_t kPartVersion = 2;
+constexpr uint64_t kPartVersion = 3;
+constexpr size_t kMeanTargetAt = 6;  // the word after the header
 
 void writeCounters(WordWriter& w, const LevelCounters& c) {
   for (uint64_t v : {c.smallProposed, c.smallAccepted, c.largeProposed, c.largeAccepted, c.invalidProposals, c.nonFinite})
@@ -42,12 +43,20 @@ ExchangeTally readTally(WordReader& in, int m) {
 
 }  // namespace
 
+double ReplicaPool::checkpointMeanTarget(const std::vector<std::vector<uint64_t>>& parts) {
+  if (parts.empty() || parts[0].size() <= kMeanTargetAt || parts[0][0] != kPartVersion)
+    throw std::runtime_error("the checkpoint holds no replica state of this version");
+  return WordReader(parts[0], kMeanTargetAt).f64();
+}
+
 std::vector<uint64_t> ReplicaPool::checkpointPart() const {
   const int m = levels();
   WordWriter w;
   for (uint64_t v : {kPartVersion, uint64_t(m), uint64_t(groups()), uint64_t(chainCount()),
                      uint64_t(settings_.normaliserLag), uint64_t(localDecisions())})
     w.u64(v);
+  w.f64(meanTarget_);
+  w.f64(bootstrapSamples_);
   w.u64(stepsPerChain_);
   w.u64(epoch_);
   w.f64(family_.regularisationFloor());
@@ -93,6 +102,8 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
                        uint64_t(settings_.normaliserLag)})
       if (in.u64() != v) throw std::runtime_error("the checkpoint's ladders are not this render's");
     const bool local = in.u64() != 0;
+    const double meanTarget = in.f64(), bootstrapSamples = in.f64();
+    if (meanTarget != meanTarget_) throw std::runtime_error("the checkpoint's bootstrap is not this pool's");
     const uint64_t steps = in.u64(), epoch = in.u64();
     const double floor = in.f64();
     std::vector<double> bootstrapSum = in.f64s(size_t(m));
@@ -103,6 +114,7 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
     const ExchangeTally t = readTally(in, m);
     const uint64_t partTrips = in.u64();
     if (r == 0) {  // the same on every rank
+      bootstrapSamples_ = bootstrapSamples;
       stepsPerChain_ = steps;
       epoch_ = epoch;
       family_.restoreRegularisationFloor(float(floor));

@@ -29,11 +29,17 @@ std::vector<double> bootstrapFeatures(PssEvaluator& eval, const FamilySettings& 
 
 ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, uint64_t seed,
                          const std::vector<double>& bootstrap, int rank, int ranks)
+    : ReplicaPool(eval, settings, seed, LevelFamily::meanTarget(settings.family, bootstrap), rank, ranks) {
+  startFromBootstrap(bootstrap);
+}
+
+ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, uint64_t seed, double meanTarget,
+                         int rank, int ranks)
     : settings_(settings),
       seed_(seed),
       rank_(rank),
       ranks_(ranks),
-      family_(settings.family, LevelFamily::meanTarget(settings.family, bootstrap)),
+      family_(settings.family, meanTarget),
       estimator_(family_, settings.beta),
       evaluator_(eval, family_),
       placement_(resolvePlacement(settings.placement, settings.ladders, ranks)),
@@ -41,20 +47,8 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
       tally_(family_.levels()),
       trips_(settings.ladders * family_.levels(), family_.levels()) {
   const int m = levels();
-  const size_t features = size_t(LevelFamily::featureCount(settings.family));
-  const size_t samples = bootstrap.size() / features;
-  // Every level's targets on the bootstrap: its normaliser and its starting distribution.
-  std::vector<std::vector<double>> q(static_cast<size_t>(m), std::vector<double>(samples));
-  std::vector<double> qi(static_cast<size_t>(m));
+  meanTarget_ = meanTarget;
   bootstrapSum_.assign(size_t(m), 0.0);
-  for (size_t i = 0; i < samples; ++i) {
-    family_.targets(bootstrap.data() + i * features, qi.data());
-    for (int k = 0; k < m; ++k) {
-      q[size_t(k)][i] = qi[size_t(k)];
-      bootstrapSum_[size_t(k)] += qi[size_t(k)];
-    }
-  }
-  bootstrapCount_ = bootstrapSamples_ = double(samples);
   largeSum_.assign(size_t(m), 0.0);
   if (settings.normaliserLag < 1) throw std::invalid_argument("the normaliser lag must be at least 1 round");
   pendingLarge_.assign(size_t(roundGroups(settings.ladders)), LargeStepSums(m));  // defines groups()
@@ -70,10 +64,6 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
   balanceDecisions_.assign(size_t(groups()), 0);
   windowSpan_.assign(size_t(groups()), 1.0);
   epochOf_.assign(size_t(chainCount()), 0);
-  std::vector<double> b(static_cast<size_t>(m));
-  for (int k = 0; k < m; ++k) b[size_t(k)] = samples ? bootstrapSum_[size_t(k)] / double(samples) : 0.0;
-  estimator_.setNormalisers(b);
-
   levelOf_.resize(size_t(chainCount()));
   for (int c = 0; c < chainCount(); ++c) {
     levelOf_[size_t(c)] = c % m;
@@ -84,7 +74,27 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
     hostedByRank_[size_t(chainRank(c, m, ranks_, placement_))].push_back(c);
   localIndex_.assign(size_t(chainCount()), -1);
   // Nothing visible (I = 0 everywhere the bootstrap looked): no chain runs, the image stays black.
-  active_ = LevelFamily::meanTarget(settings.family, bootstrap) > 0.0;
+  active_ = meanTarget > 0.0;
+}
+
+void ReplicaPool::startFromBootstrap(const std::vector<double>& bootstrap) {
+  const int m = levels();
+  const size_t features = size_t(LevelFamily::featureCount(settings_.family));
+  const size_t samples = bootstrap.size() / features;
+  // Every level's targets on the bootstrap: its normaliser and its starting distribution.
+  std::vector<std::vector<double>> q(static_cast<size_t>(m), std::vector<double>(samples));
+  std::vector<double> qi(static_cast<size_t>(m));
+  for (size_t i = 0; i < samples; ++i) {
+    family_.targets(bootstrap.data() + i * features, qi.data());
+    for (int k = 0; k < m; ++k) {
+      q[size_t(k)][i] = qi[size_t(k)];
+      bootstrapSum_[size_t(k)] += qi[size_t(k)];
+    }
+  }
+  bootstrapCount_ = bootstrapSamples_ = double(samples);
+  std::vector<double> b(static_cast<size_t>(m));
+  for (int k = 0; k < m; ++k) b[size_t(k)] = samples ? bootstrapSum_[size_t(k)] / double(samples) : 0.0;
+  estimator_.setNormalisers(b);
   if (!active_) return;
   std::vector<Distribution1D> start;
   for (int k = 0; k < m; ++k) {
@@ -92,16 +102,16 @@ ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, ui
     start.emplace_back(bootstrapSum_[size_t(k)] > 0.0 ? q[size_t(k)] : std::vector<double>(samples, 1.0));
   }
   std::vector<std::vector<StreamValues>> annealed;
-  if (settings_.init == InitKind::Annealing) annealed = annealedStarts(evaluator_, family_, q, seed, settings_.annealing);
+  if (settings_.init == InitKind::Annealing) annealed = annealedStarts(evaluator_, family_, q, seed_, settings_.annealing);
   chains_.reserve(hosted().size());
   for (int c : hosted()) {
     const int level = c % m;
-    ReplicaChain& chain = chains_.emplace_back(replicaChainKey(seed, c), level, family_);
+    ReplicaChain& chain = chains_.emplace_back(replicaChainKey(seed_, c), level, family_);
     if (!annealed.empty()) {
       const std::vector<StreamValues>& particles = annealed[size_t(level)];
-      chain.start(evaluator_, replicaChainKey(seed, c), particles[chain.pickUniform(particles.size())]);
+      chain.start(evaluator_, replicaChainKey(seed_, c), particles[chain.pickUniform(particles.size())]);
     } else {
-      chain.start(evaluator_, bootstrapKey(seed, chain.pickBootstrap(start[size_t(level)])));
+      chain.start(evaluator_, bootstrapKey(seed_, chain.pickBootstrap(start[size_t(level)])));
     }
   }
   reindex();

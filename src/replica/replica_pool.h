@@ -47,6 +47,11 @@ class ReplicaPool {
   // `bootstrap` holds every bootstrap sample's features (bootstrapFeatures, summed over ranks).
   ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, uint64_t seed, const std::vector<double>& bootstrap,
               int rank, int ranks);
+  // A pool to restore() a checkpoint into: no bootstrap is taken again, the family's scale (the
+  // bootstrap's mean target) comes from the checkpoint (checkpointMeanTarget).
+  ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, uint64_t seed, double meanTarget, int rank,
+              int ranks);
+  static double checkpointMeanTarget(const std::vector<std::vector<uint64_t>>& parts);
   ReplicaPool(const ReplicaPool&) = delete;  // chains refer to family_
   ReplicaPool& operator=(const ReplicaPool&) = delete;
 
@@ -132,6 +137,8 @@ class ReplicaPool {
   bool hosts(int chain) const { return localIndex_[size_t(chain)] >= 0; }
 
  private:
+  // The bootstrap's normalisers and every hosted chain's first state (resampled or annealed).
+  void startFromBootstrap(const std::vector<double>& bootstrap);
   const std::vector<int>& hosted() const { return hostedByRank_[size_t(rank_)]; }
   void reindex();  // localIndex_ from hosted()
   std::vector<ChainMove> balanceMoves(int group, const std::vector<double>& seconds, const std::vector<double>& squares,
@@ -176,6 +183,7 @@ class ReplicaPool {
   std::vector<double> bootstrapSum_;    // sum of q_k over the bootstrap
   double bootstrapCount_ = 0.0;
   double bootstrapSamples_ = 0.0;       // the bootstrap's size, also after the targets moved
+  double meanTarget_ = 0.0;             // the bootstrap's mean target: the family's scale
   std::vector<double> largeSum_;        // all ranks' large-step sums so far
   double largeCount_ = 0.0;
   std::vector<LargeStepSums> pendingLarge_;  // per group: this rank's, since the group's last message

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <optional>
 
 #include "render/renderer.h"
 #include "replica/replica_pool.h"
@@ -458,7 +459,13 @@ struct LoopRun {
 };
 
 LoopRun runLoopSized(Fixture& fx, const std::vector<double>& lum, double mpp, const LoopRun* resumeFrom, int w, int h) {
-  ReplicaPool pool(*fx.eval, fx.settings, 5, lum, 0, 1);
+  // A resumed pool takes no bootstrap: what it needs of it is in the checkpoint.
+  std::optional<ReplicaPool> pooled;
+  if (resumeFrom)
+    pooled.emplace(*fx.eval, fx.settings, 5, ReplicaPool::checkpointMeanTarget({resumeFrom->part}), 0, 1);
+  else
+    pooled.emplace(*fx.eval, fx.settings, 5, lum, 0, 1);
+  ReplicaPool& pool = *pooled;
   ReplicaSchedule schedule(double(w) * h, pool.chainCount(), fx.settings.exchangeInterval, std::nullopt, mpp);
   LoopRun out;
   out.films.assign(1, Film(w, h));
