@@ -94,6 +94,7 @@ void checkExtensions(Context& ctx, const Json& doc) {
 // A primitive as declared, before any data is read.
 struct PrimitiveDecl {
   std::optional<uint32_t> position, normal, indices, material;
+  std::optional<uint32_t> anyAttribute;  // all attributes have one count: the vertex count
   uint32_t mode = kTriangles;
 };
 
@@ -122,6 +123,7 @@ std::vector<std::vector<PrimitiveDecl>> parseMeshes(Context& ctx, const Json& do
       for (auto it = attributes->begin(); it != attributes->end(); ++it) {
         const uint32_t a =
             indexValue(ctx, it.value(), pe, "attributes." + printable(it.key()), "accessors", accessorCount);
+        if (!d.anyAttribute) d.anyAttribute = a;
         if (it.key() == "POSITION") d.position = a;
         if (it.key() == "NORMAL") d.normal = a;
       }
@@ -281,9 +283,9 @@ std::vector<Vec3> readNormals(Context& ctx, const AccessorReader& reader, uint32
   return normals;
 }
 
-// Vertex indices, checked against the vertex count when the primitive has positions.
+// Vertex indices, checked against the vertex count.
 std::vector<uint32_t> readIndices(const Context& ctx, const AccessorReader& reader, uint32_t accessor,
-                                  std::optional<size_t> vertexCount, const std::string& element) {
+                                  size_t vertexCount, const std::string& element) {
   std::vector<uint32_t> indices = reader.readIndices(accessor, element);
   const uint32_t restart = reader.restartValue(accessor);
   for (size_t i = 0; i < indices.size(); ++i) {
@@ -293,10 +295,10 @@ std::vector<uint32_t> readIndices(const Context& ctx, const AccessorReader& read
       ctx.fail(element, "index " + std::to_string(restart) + " at position " + std::to_string(i) + " of " +
                             indexed("accessors", accessor) +
                             " is the primitive restart value of its component type, which glTF forbids");
-    if (vertexCount && indices[i] >= *vertexCount)
+    if (indices[i] >= vertexCount)
       ctx.fail(element, "index " + std::to_string(indices[i]) + " at position " + std::to_string(i) + " of " +
                             indexed("accessors", accessor) + " is out of range: POSITION has " +
-                            std::to_string(*vertexCount) + " vertices");
+                            std::to_string(vertexCount) + " vertices");
   }
   return indices;
 }
@@ -326,7 +328,9 @@ LocalPrimitive readPrimitive(Context& ctx, const AccessorReader& reader, const P
                              const std::string& element) {
   LocalPrimitive out;
   out.material = d.material;
-  std::optional<size_t> vertexCount;
+  // Without POSITION the other attributes give the vertex count (none: no vertices), as for the
+  // validator, so that indices are checked all the same.
+  size_t vertexCount = d.anyAttribute ? reader.count(*d.anyAttribute) : 0;
   if (d.position) {
     out.positions = reader.readVec3(*d.position, element, "POSITION");
     for (size_t v = 0; v < out.positions.size(); ++v)
@@ -334,19 +338,19 @@ LocalPrimitive readPrimitive(Context& ctx, const AccessorReader& reader, const P
         ctx.fail(element, "POSITION (" + indexed("accessors", *d.position) + ") has a non-finite value at vertex " +
                               std::to_string(v));
     vertexCount = out.positions.size();
-    if (*vertexCount > UINT32_MAX) ctx.fail(element, "has too many vertices");
+    if (vertexCount > UINT32_MAX) ctx.fail(element, "has too many vertices");
   }
   if (d.normal) {
     out.normals = readNormals(ctx, reader, *d.normal, element);
-    if (vertexCount && out.normals.size() != *vertexCount)
-      ctx.fail(element, "NORMAL has " + std::to_string(out.normals.size()) + " entries but POSITION has " +
-                            std::to_string(*vertexCount));
+    if (out.normals.size() != vertexCount)
+      ctx.fail(element, "NORMAL has " + std::to_string(out.normals.size()) + " entries but " +
+                            (d.position ? "POSITION" : "its first attribute") + " has " + std::to_string(vertexCount));
   }
   std::vector<uint32_t> indices;
   if (d.indices) {
     indices = readIndices(ctx, reader, *d.indices, vertexCount, element);
   } else {
-    indices.resize(vertexCount.value_or(0));
+    indices.resize(vertexCount);
     std::iota(indices.begin(), indices.end(), 0u);
   }
   if (!d.position) return LocalPrimitive{{}, {}, {}, d.material};  // not drawn (warned)

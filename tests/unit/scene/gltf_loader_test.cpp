@@ -584,6 +584,13 @@ TEST_F(Synthesised, PrimitiveWithoutPositionIsNotDrawn) {
   const Scene s = load(b.finish());
   EXPECT_EQ(s.triangles.size(), 1u);
   EXPECT_TRUE(hasWarning(s, "mesh primitives without POSITION are not drawn"));
+  // Its indices are still checked, against the count of its other attributes (the validator's
+  // ACCESSOR_INDEX_OOB).
+  GltfBuilder c;
+  const std::vector<uint16_t> idx = {0, 1, 3};
+  c.node({{"mesh", c.mesh({{"attributes", {{"NORMAL", c.positions({{0, 0, 1}, {0, 0, 1}, {0, 0, 1}})}}},
+                           {"indices", c.indices(idx)}})}});
+  EXPECT_TRUE(contains(loadError(c.finish()), "index 3 at position 2 of accessors[1] is out of range"));
 }
 
 // A buffer without a uri outside a GLB has no data, which glTF allows (the validator accepts it):
