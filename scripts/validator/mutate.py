@@ -104,6 +104,9 @@ def mutate_json(rng, doc):
     else:
         # Move the key/value into another object: misplaced or unexpected properties.
         objects = [p for p, v in paths if isinstance(v, dict)]
+        if not objects:
+            parent[key] = new_value(rng, value)
+            return doc
         target = get_at(doc, rng.choice(objects))
         target[key if isinstance(key, str) else "k%d" % key] = copy.deepcopy(value)
     return doc
