@@ -334,9 +334,8 @@ int main(int argc, char** argv) {
       throw relt::InputError("", "--snapshot-every", "not available for erpt");
     checkReplicaOptions(o);
     const bool checkpoints = !o.checkpoint.dir.empty() || !o.checkpoint.resume.empty();
-    if (checkpoints && o.render.integrator != relt::Integrator::Relt && o.render.integrator != relt::Integrator::PathTracing &&
-        o.render.integrator != relt::Integrator::Bdpt)
-      throw relt::InputError("", "--checkpoint/--resume", "checkpoints are available for relt, pt and bdpt, not yet " + o.integrator);
+    if (checkpoints && o.render.integrator == relt::Integrator::Erpt)
+      throw relt::InputError("", "--checkpoint/--resume", "checkpoints are not yet available for " + o.integrator);
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
     relt::mpi::startStallWatchdog(o.stallTimeout);
     relt::mpi::runRender(session, o.render, o.checkpoint);

@@ -5,7 +5,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
+#include "checkpoint/checkpoint.h"
+#include "core/error.h"
+#include "core/words.h"
 #include "mcmc/chain_pool.h"
 #include "mcmc/round_schedule.h"
 #include "render/pace.h"
@@ -16,6 +20,215 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+PssmltSettings pssmltSettings(const RenderSettings& settings) {
+  PssmltSettings ps;
+  ps.mutationsPerPixel = settings.mutationsPerPixel.value_or(16.0);
+  ps.chains = settings.chains;
+  ps.largeStepProbability = settings.largeStepProbability;
+  ps.sizes = KelemenSizes{settings.smallStepMin, settings.smallStepMax};
+  return ps;
+}
+
+std::vector<int> ownedChains(const Session& session, int chains) {
+  std::vector<int> mine;
+  for (int c = 0; c < chains; ++c)
+    if (ownsChain(c, session.rank(), session.size())) mine.push_back(c);
+  return mine;
+}
+
+// A rank's checkpoint part: the bootstrap targets (the root's only: every rank holds the same
+// ones), then the pool's chains.
+std::vector<uint64_t> checkpointPart(bool root, const std::vector<double>& targets, const ChainPool& pool) {
+  WordWriter t, w;
+  if (root) t.f64s(targets);
+  w.block(t.words());
+  w.block(pool.checkpointPart());
+  return std::move(w.words());
+}
+
+// The bootstrap as the checkpoint holds it (a resume does not run it again); `poolParts` gets
+// every old rank's chains.
+std::vector<double> restoredTargets(const Resumed& resumed, std::vector<std::vector<uint64_t>>& poolParts) {
+  std::vector<double> targets;
+  for (size_t r = 0; r < resumed.parts.size(); ++r) {
+    WordReader in(resumed.parts[r]);
+    const std::vector<uint64_t> words = in.block();
+    if (r == 0) targets = WordReader(words).f64s(words.size());
+    poolParts.push_back(in.block());
+    if (!in.done()) throw std::runtime_error("the checkpoint's chain part has trailing data");
+  }
+  return targets;
+}
+
+// The chains this rank owns, started from the bootstrap or taken from a checkpoint, and the
+// round loop that runs them (collective).
+class ChainRender {
+ public:
+  ChainRender(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
+              const CheckpointPlan& plan, const Resumed* resumed);
+  // Rounds until the budget is spent or the ranks agree to stop; snapshots and checkpoints between.
+  void loop(const SnapshotWriter& snapshot);
+  PssmltOutcome outcome();
+
+ private:
+  std::vector<double> bootstrap(const Resumed* resumed);
+  void restore(const Resumed& resumed);
+  double normaliser(std::vector<ChainCounters>* perDepthOut, ChainCounters* countersOut);
+  void writeSnapshot(const SnapshotWriter& snapshot);
+  void writeCheckpoint(double elapsed);
+
+  const Session& session_;
+  const RenderSettings& settings_;
+  Film& film_;
+  const CheckpointPlan& plan_;
+  const Clock::time_point start_ = Clock::now();  // a time budget counts the bootstrap too
+  const PssmltSettings ps_;
+  const bool mmlt_;
+  const double area_;
+  PssEvaluator eval_;
+  MmltEvaluator mmltEval_;
+  std::vector<std::vector<uint64_t>> poolParts_;  // a resume's chains, every old rank's
+  std::vector<double> targets_;
+  double bootstrapSum_ = 0.0;
+  ChainPool pool_;
+  RoundSchedule schedule_;
+  uint64_t rounds_ = 0;
+  double elapsed_ = 0.0;  // the agreed seconds of chain rendering, over all sittings
+};
+
+ChainRender::ChainRender(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
+                         const CheckpointPlan& plan, const Resumed* resumed)
+    : session_(session),
+      settings_(settings),
+      film_(film),
+      plan_(plan),
+      ps_(pssmltSettings(settings)),
+      mmlt_(settings.integrator == Integrator::Mmlt),
+      area_(double(settings.width) * settings.height),
+      eval_(renderer.context(), settings.width, settings.height),
+      mmltEval_(renderer.context(), settings.width, settings.height),
+      targets_(bootstrap(resumed)),
+      pool_(mmlt_ ? nullptr : &eval_, mmlt_ ? &mmltEval_ : nullptr, targets_, settings.seed, ps_,
+            ownedChains(session, ps_.chains)),
+      schedule_(area_, ps_.chains, settings.seconds,
+                static_cast<uint64_t>(std::llround(ps_.mutationsPerPixel * area_))) {
+  for (double t : targets_) bootstrapSum_ += t;
+  if (resumed) restore(*resumed);
+  elapsed_ += allreduceMax(since(start_));
+}
+
+// Sample i on rank i mod P; every rank then holds all targets (same order, same sums).
+std::vector<double> ChainRender::bootstrap(const Resumed* resumed) {
+  if (resumed) {
+    try {
+      return restoredTargets(*resumed, poolParts_);
+    } catch (const std::runtime_error& e) {
+      throw InputError(resumed->file, "", e.what());
+    }
+  }
+  std::vector<double> targets =
+      mmlt_ ? mmltBootstrapTargets(mmltEval_, settings_.seed, ps_.bootstrap, session_.rank(), session_.size())
+            : bootstrapTargets(eval_, settings_.seed, ps_.bootstrap, session_.rank(), session_.size());
+  allreduceSum(targets);
+  return targets;
+}
+
+void ChainRender::restore(const Resumed& resumed) {
+  // The image film, then (mmlt, stratified) one per depth: reduced on the root, empty elsewhere.
+  std::vector<Film>& depths = pool_.depthFilms(film_.width(), film_.height());
+  std::vector<Film> films(1 + depths.size(), Film(film_.width(), film_.height()));
+  resumed.restoreFilms(films);
+  film_.data() = std::move(films[0].data());
+  for (size_t d = 0; d < depths.size(); ++d) depths[d].data() = std::move(films[d + 1].data());
+  try {
+    if (targets_.size() != static_cast<size_t>(ps_.bootstrap)) throw std::runtime_error("the checkpoint's bootstrap is not this render's");
+    pool_.restore(poolParts_);
+  } catch (const std::runtime_error& e) {
+    throw InputError(resumed.file, "", e.what());
+  }
+  poolParts_.clear();
+  rounds_ = resumed.progress.at("rounds").get<uint64_t>();
+  elapsed_ = resumed.progress.at("elapsed").get<double>();
+}
+
+double ChainRender::normaliser(std::vector<ChainCounters>* perDepthOut, ChainCounters* countersOut) {
+  std::vector<ChainCounters> perDepth;
+  for (const ChainCounters& c : pool_.perDepth()) perDepth.push_back(sumOverRanks(c));
+  const ChainCounters counters = sumOverRanks(pool_.counters());
+  if (perDepthOut) *perDepthOut = perDepth;
+  if (countersOut) *countersOut = counters;
+  return mmlt_ ? mmltNormaliser(targets_, settings_.maxDepth, perDepth)
+               : pooledNormaliser(bootstrapSum_, targets_.size(), counters);
+}
+
+void ChainRender::writeSnapshot(const SnapshotWriter& snapshot) {
+  std::vector<ChainCounters> perDepth;
+  const double b = normaliser(&perDepth, nullptr);
+  Film merged = film_;
+  if (mmlt_) pool_.mergeDepthFilms(mmltDepthWeights(targets_, settings_.maxDepth, perDepth), merged);
+  std::vector<double> sums = std::move(merged.data());
+  reduceSumToRoot(sums);
+  if (session_.isRoot()) snapshot(sums, pssmltResolveDivisor(schedule_.mutationsAfter(rounds_), b, area_));
+}
+
+void ChainRender::writeCheckpoint(double elapsed) {
+  std::vector<Film> films{film_};
+  for (const Film& f : pool_.depthFilms(film_.width(), film_.height())) films.push_back(f);
+  const nlohmann::json progress = {
+      {"rounds", rounds_}, {"elapsed", elapsed}, {"mutations", schedule_.mutationsAfter(rounds_)}};
+  saveCheckpoint(plan_, integratorName(settings_.integrator), progress, films,
+                 checkpointPart(session_.isRoot(), targets_, pool_));
+}
+
+void ChainRender::loop(const SnapshotWriter& snapshot) {
+  Pace pace;  // the rounds' agreed durations: one that spanned a stall does not end the render early
+  double lastSnapshot = elapsed_, lastPrint = elapsed_, lastCheckpoint = elapsed_;
+  bool printed = false;
+  const double sittingStart = elapsed_ - since(start_);  // this process's clock, continuing the earlier time
+  const bool tty = ::isatty(STDERR_FILENO);
+  const bool anyChains = allreduceMax(pool_.size() > 0 ? 1 : 0) > 0;
+  bool more = anyChains && schedule_.anotherRound(rounds_, elapsed_, pace.typical());
+  while (more) {
+    std::vector<uint64_t> steps;
+    for (int c : ownedChains(session_, ps_.chains))
+      steps.push_back(schedule_.doneAfter(rounds_ + 1, c) - schedule_.doneAfter(rounds_, c));
+    if (pool_.size() > 0) pool_.run(steps, film_);
+    ++rounds_;
+    const Agreement agreed = agree(sittingStart + since(start_));
+    pace.add(agreed.elapsed - elapsed_);
+    elapsed_ = agreed.elapsed;
+    more = !agreed.stop && schedule_.anotherRound(rounds_, elapsed_, pace.typical());
+    if (session_.isRoot() && !agreed.stop && elapsed_ - lastPrint >= 1.0) {
+      lastPrint = elapsed_;
+      printed = true;
+      const double rate = double(schedule_.mutationsAfter(rounds_)) / elapsed_;
+      std::fprintf(stderr, tty ? "\r%s" : "%s\n",
+                   progressLine(schedule_.fraction(rounds_, elapsed_), elapsed_, rate, "mutations").c_str());
+    }
+    // A save request (interrupt.h): the image so far now, as a snapshot, and a checkpoint.
+    if ((agreed.save && more) || snapshotDue(settings_.snapshotEvery, elapsed_, lastSnapshot, more)) {
+      lastSnapshot = elapsed_;
+      writeSnapshot(snapshot);
+    }
+    if (!plan_.dir.empty() && (agreed.save || checkpointDue(plan_.every, elapsed_, lastCheckpoint, more))) {
+      lastCheckpoint = elapsed_;
+      writeCheckpoint(elapsed_);
+    }
+  }
+  if (session_.isRoot() && tty && printed) std::fprintf(stderr, "\n");
+}
+
+PssmltOutcome ChainRender::outcome() {
+  PssmltOutcome out;
+  out.bootstrapSamples = targets_.size();
+  out.rounds = rounds_;
+  out.totalMutations = schedule_.mutationsAfter(rounds_);
+  out.normaliser = normaliser(&out.perDepth, &out.counters);
+  // mmlt: each path length's film joins the image with its own normaliser and step count.
+  if (mmlt_) pool_.mergeDepthFilms(mmltDepthWeights(targets_, settings_.maxDepth, out.perDepth), film_);
+  return out;
+}
 
 }  // namespace
 
@@ -31,87 +244,10 @@ ChainCounters sumOverRanks(const ChainCounters& c) {
 }
 
 PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
-                        const SnapshotWriter& snapshot) {
-  const auto start = Clock::now();  // a time budget counts the bootstrap too
-  PssmltSettings ps;
-  ps.mutationsPerPixel = settings.mutationsPerPixel.value_or(16.0);
-  ps.chains = settings.chains;
-  ps.largeStepProbability = settings.largeStepProbability;
-  ps.sizes = KelemenSizes{settings.smallStepMin, settings.smallStepMax};
-  const bool mmlt = settings.integrator == Integrator::Mmlt;
-  PssEvaluator eval(renderer.context(), settings.width, settings.height);
-  MmltEvaluator mmltEval(renderer.context(), settings.width, settings.height);
-
-  // Bootstrap: sample i on rank i mod P; every rank then holds all targets (same order, same sums).
-  std::vector<double> targets =
-      mmlt ? mmltBootstrapTargets(mmltEval, settings.seed, ps.bootstrap, session.rank(), session.size())
-           : bootstrapTargets(eval, settings.seed, ps.bootstrap, session.rank(), session.size());
-  allreduceSum(targets);
-  double bootstrapSum = 0.0;
-  for (double t : targets) bootstrapSum += t;
-
-  std::vector<int> mine;
-  for (int c = 0; c < ps.chains; ++c)
-    if (ownsChain(c, session.rank(), session.size())) mine.push_back(c);
-  ChainPool pool(mmlt ? nullptr : &eval, mmlt ? &mmltEval : nullptr, targets, settings.seed, ps, mine);
-  const bool anyChains = allreduceMax(pool.size() > 0 ? 1 : 0) > 0;
-
-  const double area = double(settings.width) * settings.height;
-  const RoundSchedule schedule(area, ps.chains, settings.seconds,
-                               static_cast<uint64_t>(std::llround(ps.mutationsPerPixel * area)));
-  auto normaliser = [&](std::vector<ChainCounters>* perDepthOut, ChainCounters* countersOut) {
-    std::vector<ChainCounters> perDepth;
-    for (const ChainCounters& c : pool.perDepth()) perDepth.push_back(sumOverRanks(c));
-    const ChainCounters counters = sumOverRanks(pool.counters());
-    if (perDepthOut) *perDepthOut = perDepth;
-    if (countersOut) *countersOut = counters;
-    return mmlt ? mmltNormaliser(targets, settings.maxDepth, perDepth)
-                : pooledNormaliser(bootstrapSum, targets.size(), counters);
-  };
-
-  Pace pace;  // the rounds' agreed durations: one that spanned a stall does not end the render early
-  double elapsed = allreduceMax(since(start)), lastSnapshot = 0.0, lastPrint = 0.0;
-  const bool tty = ::isatty(STDERR_FILENO);
-  uint64_t rounds = 0;
-  for (;;) {
-    if (!anyChains || !schedule.anotherRound(rounds, elapsed, pace.typical())) break;
-    std::vector<uint64_t> steps;
-    for (int c : mine) steps.push_back(schedule.doneAfter(rounds + 1, c) - schedule.doneAfter(rounds, c));
-    if (pool.size() > 0) pool.run(steps, film);
-    ++rounds;
-    const Agreement agreed = agree(since(start));
-    pace.add(agreed.elapsed - elapsed);
-    elapsed = agreed.elapsed;
-    if (agreed.stop) break;
-    if (session.isRoot() && elapsed - lastPrint >= 1.0) {
-      lastPrint = elapsed;
-      const double rate = double(schedule.mutationsAfter(rounds)) / elapsed;
-      std::fprintf(stderr, tty ? "\r%s" : "%s\n",
-                   progressLine(schedule.fraction(rounds, elapsed), elapsed, rate, "mutations").c_str());
-    }
-    // A save request (interrupt.h): the image so far now, as a snapshot.
-    const bool more = schedule.anotherRound(rounds, elapsed, pace.typical());
-    if ((agreed.save && more) || snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more)) {
-      lastSnapshot = elapsed;
-      std::vector<ChainCounters> perDepth;
-      const double b = normaliser(&perDepth, nullptr);
-      Film merged = film;
-      if (mmlt) pool.mergeDepthFilms(mmltDepthWeights(targets, settings.maxDepth, perDepth), merged);
-      std::vector<double> sums = std::move(merged.data());
-      reduceSumToRoot(sums);
-      if (session.isRoot()) snapshot(sums, pssmltResolveDivisor(schedule.mutationsAfter(rounds), b, area));
-    }
-  }
-
-  if (session.isRoot() && tty && lastPrint > 0.0) std::fprintf(stderr, "\n");
-  PssmltOutcome out;
-  out.bootstrapSamples = targets.size();
-  out.rounds = rounds;
-  out.totalMutations = schedule.mutationsAfter(rounds);
-  out.normaliser = normaliser(&out.perDepth, &out.counters);
-  // mmlt: each path length's film joins the image with its own normaliser and step count.
-  if (mmlt) pool.mergeDepthFilms(mmltDepthWeights(targets, settings.maxDepth, out.perDepth), film);
-  return out;
+                        const SnapshotWriter& snapshot, const CheckpointPlan& plan, const Resumed* resumed) {
+  ChainRender render(session, renderer, settings, film, plan, resumed);
+  render.loop(snapshot);
+  return render.outcome();
 }
 
 }  // namespace relt::mpi

@@ -2,6 +2,7 @@
 // The distributed part of pssmlt and mmlt: bootstrap shares, chain ownership, and the sums.
 #include <functional>
 
+#include "checkpoint_io.h"
 #include "comm.h"
 #include "film/film.h"
 #include "mcmc/mmlt.h"
@@ -26,8 +27,11 @@ ChainCounters sumOverRanks(const ChainCounters& c);
 using SnapshotWriter = std::function<void(const std::vector<double>& sums, double divisor)>;
 
 // Runs every chain this rank owns into `film` (not yet reduced), pssmlt or mmlt; collective.
-// --time stops at a round boundary all ranks agree on; --snapshot-every calls `snapshot`.
+// --time stops at a round boundary all ranks agree on; --snapshot-every calls `snapshot`;
+// `plan` writes checkpoints; a render resumed from `resumed` (or null) continues it without
+// running the bootstrap again (its targets are in the checkpoint).
 PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
-                        const SnapshotWriter& snapshot);
+                        const SnapshotWriter& snapshot, const CheckpointPlan& plan = {},
+                        const Resumed* resumed = nullptr);
 
 }  // namespace relt::mpi

@@ -298,6 +298,53 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
                settings.output.c_str());
 }
 
+// pssmlt and mmlt: the chains' image (plus the direct emission apart), their counters in stats.json.
+void renderChains(const Session& session, Renderer& renderer, const RenderSettings& settings, Clock::time_point wallStart,
+                  const CheckpointPlan& plan, const Resumed* resumed) {
+  Film film(settings.width, settings.height);
+  const auto renderStart = Clock::now();
+  int snapshots = 0;
+  const DirectEstimate direct = directEmission(session, renderer, settings);
+  const PssmltOutcome o = runPssmlt(session, renderer, chainSettings(settings, direct), film,
+                                    [&](const std::vector<double>& sums, double d) {
+    writeImages(settings, withDirect(Renderer::resolve(film, sums, d), direct.image));
+    ++snapshots;
+  }, plan, resumed);
+  const Gathered g = gatherAfterRender(renderStart, renderer, film);
+  if (!session.isRoot()) return;
+  const double area = double(settings.width) * settings.height;
+  const Image image =
+      withDirect(Renderer::resolve(film, film.data(), pssmltResolveDivisor(o.totalMutations, o.normaliser, area)), direct.image);
+  const uint64_t mutations = o.counters.smallProposed + o.counters.largeProposed;
+  nlohmann::json j = commonStats(settings, session, g, image);
+  j["nan_inf_samples_dropped"] = g.dropped + direct.dropped;
+  addDirectStats(j, settings, direct);
+  addMutationRates(j, mutations, g, session.size(), resumed ? resumed->progress.at("mutations").get<uint64_t>() : 0);
+  j["rounds"] = o.rounds;
+  j["snapshots"] = snapshots;
+  j["bootstrap_samples"] = o.bootstrapSamples;
+  j["normaliser"] = o.normaliser;
+  j["acceptance_small"] = o.counters.smallProposed ? double(o.counters.smallAccepted) / o.counters.smallProposed : 0.0;
+  j["acceptance_large"] = o.counters.largeProposed ? double(o.counters.largeAccepted) / o.counters.largeProposed : 0.0;
+  j["invalid_proposals"] = o.counters.invalidProposals;
+  if (!o.perDepth.empty()) {
+    nlohmann::json depths = nlohmann::json::array();
+    for (size_t d = 0; d < o.perDepth.size(); ++d) {
+      const ChainCounters& c = o.perDepth[d];
+      const uint64_t proposed = c.smallProposed + c.largeProposed;
+      depths.push_back({{"depth", d + 1},
+                        {"mutations", proposed},
+                        {"acceptance", proposed ? double(c.smallAccepted + c.largeAccepted) / proposed : 0.0}});
+    }
+    j["per_depth"] = depths;
+  }
+  if (resumed) j["resumed_from"] = {{"checkpoint", resumed->file}, {"progress", resumed->progress}};
+  writeOutputs(settings, image, j, wallStart);
+  std::fprintf(stderr, "relt: %llu mutations, %.2f s, %.3f M mutations/s; wrote %s\n",
+               static_cast<unsigned long long>(mutations), g.renderSeconds,
+               mutations / std::max(g.renderSeconds, 1e-9) * 1e-6, settings.output.c_str());
+}
+
 }  // namespace
 
 void runRender(const Session& session, RenderSettings settings, CheckpointPlan plan) {
@@ -322,46 +369,7 @@ void runRender(const Session& session, RenderSettings settings, CheckpointPlan p
   }
   Film film(settings.width, settings.height);
   if (isMarkovChain(settings.integrator)) {
-    const auto renderStart = Clock::now();
-    int snapshots = 0;
-    const DirectEstimate direct = directEmission(session, renderer, settings);
-    const PssmltOutcome o = runPssmlt(session, renderer, chainSettings(settings, direct), film,
-                                      [&](const std::vector<double>& sums, double d) {
-      writeImages(settings, withDirect(Renderer::resolve(film, sums, d), direct.image));
-      ++snapshots;
-    });
-    const Gathered g = gatherAfterRender(renderStart, renderer, film);
-    if (!session.isRoot()) return;
-    const double area = double(settings.width) * settings.height;
-    const Image image =
-        withDirect(Renderer::resolve(film, film.data(), pssmltResolveDivisor(o.totalMutations, o.normaliser, area)), direct.image);
-    const uint64_t mutations = o.counters.smallProposed + o.counters.largeProposed;
-    nlohmann::json j = commonStats(settings, session, g, image);
-    j["nan_inf_samples_dropped"] = g.dropped + direct.dropped;
-    addDirectStats(j, settings, direct);
-    addMutationRates(j, mutations, g, session.size());
-    j["rounds"] = o.rounds;
-    j["snapshots"] = snapshots;
-    j["bootstrap_samples"] = o.bootstrapSamples;
-    j["normaliser"] = o.normaliser;
-    j["acceptance_small"] = o.counters.smallProposed ? double(o.counters.smallAccepted) / o.counters.smallProposed : 0.0;
-    j["acceptance_large"] = o.counters.largeProposed ? double(o.counters.largeAccepted) / o.counters.largeProposed : 0.0;
-    j["invalid_proposals"] = o.counters.invalidProposals;
-    if (!o.perDepth.empty()) {
-      nlohmann::json depths = nlohmann::json::array();
-      for (size_t d = 0; d < o.perDepth.size(); ++d) {
-        const ChainCounters& c = o.perDepth[d];
-        const uint64_t proposed = c.smallProposed + c.largeProposed;
-        depths.push_back({{"depth", d + 1},
-                          {"mutations", proposed},
-                          {"acceptance", proposed ? double(c.smallAccepted + c.largeAccepted) / proposed : 0.0}});
-      }
-      j["per_depth"] = depths;
-    }
-    writeOutputs(settings, image, j, wallStart);
-    std::fprintf(stderr, "relt: %llu mutations, %.2f s, %.3f M mutations/s; wrote %s\n",
-                 static_cast<unsigned long long>(mutations), g.renderSeconds,
-                 mutations / std::max(g.renderSeconds, 1e-9) * 1e-6, settings.output.c_str());
+    renderChains(session, renderer, settings, wallStart, plan, resumed ? &*resumed : nullptr);
     return;
   }
   if (settings.integrator == Integrator::Erpt) {

@@ -1,10 +1,17 @@
 #include "mcmc/chain_pool.h"
 
+#include <stdexcept>
+
+#include "core/words.h"
+
 namespace relt {
+namespace {
+constexpr uint64_t kPartVersion = 1;
+}  // namespace
 
 ChainPool::ChainPool(PssEvaluator* pss, MmltEvaluator* mmlt, const std::vector<double>& bootstrapTargets,
                      uint64_t seed, const PssmltSettings& settings, const std::vector<int>& chains)
-    : pss_(pss), mmlt_(mmlt) {
+    : pss_(pss), mmlt_(mmlt), ids_(chains) {
   const Distribution1D bootstrap(bootstrapTargets);
   if (bootstrap.total() <= 0.0) return;  // nothing visible: no chains, the image stays black
   const MmltChainPlan plan =
@@ -44,20 +51,66 @@ ChainPool::ChainPool(PssEvaluator* pss, MmltEvaluator* mmlt, const std::vector<d
   }
 }
 
+template <class F>
+void ChainPool::withEvaluator(size_t i, F&& f) {
+  if (!mmlt_) return f(*pss_);
+  const int depth = depth_[i];
+  f([this, depth](SampleSource& u, PathSample& out) { return (*mmlt_)(depth, u, out); });
+}
+
+std::vector<Film>& ChainPool::depthFilms(int width, int height) {
+  if (depthFilms_ && films_.empty()) films_.assign(static_cast<size_t>(mmlt_->maxDepth()), Film(width, height));
+  return films_;
+}
+
 void ChainPool::run(const std::vector<uint64_t>& steps, Film& film) {
-  if (depthFilms_ && films_.empty())
-    films_.assign(static_cast<size_t>(mmlt_->maxDepth()), Film(film.width(), film.height()));
+  depthFilms(film.width(), film.height());
   for (size_t i = 0; i < chains_.size(); ++i) {
-    McmcChain& chain = chains_[i];
-    if (mmlt_) {
-      const int depth = depth_[i];
-      Film& target = depthFilms_ ? films_[static_cast<size_t>(depth - 1)] : film;
-      auto atDepth = [&](SampleSource& u, PathSample& out) { return (*mmlt_)(depth, u, out); };
-      for (uint64_t k = 0; k < steps[i]; ++k) chain.step(atDepth, target);
-    } else {
-      for (uint64_t k = 0; k < steps[i]; ++k) chain.step(*pss_, film);
-    }
+    Film& target = depthFilms_ ? films_[static_cast<size_t>(depth_[i] - 1)] : film;
+    withEvaluator(i, [&](auto&& eval) {
+      for (uint64_t k = 0; k < steps[i]; ++k) chains_[i].step(eval, target);
+    });
   }
+}
+
+std::vector<uint64_t> ChainPool::checkpointPart() const {
+  WordWriter w;
+  w.u64(kPartVersion);
+  w.u64(chains_.size());
+  for (size_t i = 0; i < chains_.size(); ++i) {
+    w.u64(static_cast<uint64_t>(ids_[i]));
+    w.u64(static_cast<uint64_t>(depth_[i]));
+    w.block(chains_[i].serialize());
+  }
+  return std::move(w.words());
+}
+
+void ChainPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
+  if (chains_.empty()) return;  // nothing visible: no chains were made, none were saved
+  std::vector<size_t> index;  // global id -> position here (size(): not held here)
+  for (size_t i = 0; i < ids_.size(); ++i) {
+    const size_t id = static_cast<size_t>(ids_[i]);
+    if (index.size() <= id) index.resize(id + 1, chains_.size());
+    index[id] = i;
+  }
+  std::vector<char> found(chains_.size(), 0);
+  for (const std::vector<uint64_t>& part : parts) {
+    WordReader in(part);
+    if (in.u64() != kPartVersion) throw std::runtime_error("the checkpoint's chains are of another format");
+    for (uint64_t n = in.u64(); n > 0; --n) {
+      const uint64_t id = in.u64(), depth = in.u64();
+      const std::vector<uint64_t> state = in.block();
+      if (id >= index.size() || index[id] == chains_.size()) continue;  // another rank's chain now
+      const size_t i = index[id];
+      if (found[i] || (mmlt_ && depth != static_cast<uint64_t>(depth_[i])))
+        throw std::runtime_error("the checkpoint's chains are not this render's");
+      found[i] = 1;
+      withEvaluator(i, [&](auto&& eval) { chains_[i].restore(eval, state); });
+    }
+    if (!in.done()) throw std::runtime_error("the checkpoint's chain state has trailing data");
+  }
+  for (char f : found)
+    if (!f) throw std::runtime_error("the checkpoint misses chains");
 }
 
 void ChainPool::mergeDepthFilms(const std::vector<double>& weight, Film& into) const {

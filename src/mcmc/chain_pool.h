@@ -23,6 +23,16 @@ class ChainPool {
   void mergeDepthFilms(const std::vector<double>& weight, Film& into) const;
   size_t size() const { return chains_.size(); }
 
+  // mmlt, stratified: depth d's film (index d - 1), made on all ranks alike even without chains, so
+  // that checkpoints reduce the same films everywhere; else none.
+  std::vector<Film>& depthFilms(int width, int height);
+
+  // Checkpoints: every chain's global id, depth and state. restore() takes the chains this pool
+  // holds from any old rank's part (the ranks then may have held other chains) and traces their
+  // current paths again; it throws std::runtime_error if one is missing or the parts are malformed.
+  std::vector<uint64_t> checkpointPart() const;
+  void restore(const std::vector<std::vector<uint64_t>>& parts);
+
   ChainCounters counters() const;
   // mmlt: counters per path length (index depth - 1); empty for pssmlt.
   std::vector<ChainCounters> perDepth() const;
@@ -30,6 +40,11 @@ class ChainPool {
  private:
   PssEvaluator* pss_;
   MmltEvaluator* mmlt_;
+  // f(evaluator of chain i): pssmlt's, or mmlt's at the chain's depth.
+  template <class F>
+  void withEvaluator(size_t i, F&& f);
+
+  std::vector<int> ids_;  // global chain ids, as given to the constructor
   std::vector<McmcChain> chains_;
   std::vector<int> depth_;
   bool depthFilms_ = false;  // mmlt with a stratified plan

@@ -1,5 +1,7 @@
 #include "mcmc/pssmlt.h"
 
+#include "core/words.h"
+
 #include "mcmc/chain_pool.h"
 #include "mcmc/metropolis.h"
 
@@ -59,6 +61,34 @@ void McmcChain::finishStep(bool large, float proposed, Film& film) {
   } else {
     u_.reject();
   }
+}
+
+std::vector<uint64_t> McmcChain::serialize() const {
+  WordWriter w;
+  w.u64(rng_.state());
+  w.u64(rng_.increment());
+  const ChainCounters& c = counters_;
+  for (uint64_t v : {c.smallProposed, c.smallAccepted, c.largeProposed, c.largeAccepted, c.invalidProposals}) w.u64(v);
+  w.f64(c.largeTargetSum);
+  w.block(u_.serialize());
+  return std::move(w.words());
+}
+
+StreamValues McmcChain::restoreState(const std::vector<uint64_t>& words) {
+  WordReader in(words);
+  const uint64_t state = in.u64(), increment = in.u64();
+  rng_.restore(state, increment);
+  ChainCounters& c = counters_;
+  for (uint64_t* v : {&c.smallProposed, &c.smallAccepted, &c.largeProposed, &c.largeAccepted, &c.invalidProposals})
+    *v = in.u64();
+  c.largeTargetSum = in.f64();
+  u_ = PrimarySampleVector::deserialize(in.block());
+  if (!in.done()) throw std::runtime_error("trailing data after a chain's state");
+  StreamValues values;  // every number the current path used (and maybe more: it reads a prefix)
+  for (int s = 0; s < kSampleStreamCount; ++s)
+    for (const PrimarySampleVector::Coordinate& x : u_.coordinates(static_cast<SampleStream>(s)))
+      values[size_t(s)].push_back(x.value);
+  return values;
 }
 
 ChainCounters runChains(PssEvaluator& eval, const std::vector<double>& bootstrapTargets, uint64_t seed,

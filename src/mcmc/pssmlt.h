@@ -75,8 +75,18 @@ class McmcChain {
   const ChainCounters& counters() const { return counters_; }
   float target() const { return target_; }
 
+  // Everything the chain continues from (checkpoints): random stream, point, counters.
+  std::vector<uint64_t> serialize() const;
+  // Continues a serialize()d chain bit for bit; the current path is traced again from the numbers
+  // its state holds, so `eval` must be the one the chain ran with. Throws std::runtime_error on
+  // malformed words.
+  template <class Eval>
+  void restore(Eval&& eval, const std::vector<uint64_t>& words);
+
  private:
   void finishStep(bool large, float proposed, Film& film);
+  // restore() without the re-evaluation: the numbers the current path used.
+  StreamValues restoreState(const std::vector<uint64_t>& words);
 
   PrimarySampleVector u_;
   Rng rng_;
@@ -99,6 +109,12 @@ void McmcChain::step(Eval&& eval, Film& film) {
   const bool large = rng_.uniform() < pLarge_;
   u_.startIteration(large);
   finishStep(large, eval(u_, proposal_), film);
+}
+
+template <class Eval>
+void McmcChain::restore(Eval&& eval, const std::vector<uint64_t>& words) {
+  RecordingSource replay(0, restoreState(words));
+  target_ = eval(replay, current_);
 }
 
 // b from the bootstrap targets and the large steps together (both are uniform samples of I).

@@ -43,6 +43,19 @@ void expectIdentical(const Image& a, const Image& b) {
   EXPECT_GT(a.mean(), 0.0);
 }
 
+// Renders `args` (a resume) on 2, 1 and 3 ranks: bit-identical to `whole` on the 2 ranks that wrote
+// the checkpoint, within 1e-5 relative on the others.
+void expectResumedIs(const Image& whole, const std::string& dir, const std::string& scene, const std::string& args) {
+  for (int ranks : {2, 1, 3}) {
+    const std::string out = dir + "/resumed" + std::to_string(ranks) + ".exr";
+    render(ranks, scene, "-o " + out + " " + args);
+    if (ranks == 2)
+      expectIdentical(readExr(out), whole);
+    else
+      expectSameImage(readExr(out), whole);
+  }
+}
+
 }  // namespace
 
 // relt on ring (mirrors: the tempered levels differ; the regularisation moves the targets before
@@ -53,15 +66,7 @@ TEST(Checkpoint, ReltResumedIsTheRenderThatNeverStoppedOnAnyRankCount) {
   render(2, "ring", "-o " + dir + "/whole.exr --mutations-per-pixel 8 " + kRelt);
   render(2, "ring", "-o " + dir + "/half.exr --mutations-per-pixel 4 --checkpoint " + dir + "/ck " + kRelt);
   ASSERT_TRUE(fileExists(dir + "/ck/checkpoint.relt"));
-  const Image whole = readExr(dir + "/whole.exr");
-  for (int ranks : {2, 1, 3}) {
-    const std::string out = dir + "/resumed" + std::to_string(ranks) + ".exr";
-    render(ranks, "ring", "-o " + out + " --mutations-per-pixel 8 --resume " + dir + "/ck " + kRelt);
-    if (ranks == 2)
-      expectIdentical(readExr(out), whole);
-    else
-      expectSameImage(readExr(out), whole);
-  }
+  expectResumedIs(readExr(dir + "/whole.exr"), dir, "ring", "--mutations-per-pixel 8 --resume " + dir + "/ck " + kRelt);
 }
 
 // pt and bdpt: the checkpoint is the film and the passes done.
@@ -76,6 +81,28 @@ TEST(Checkpoint, PtAndBdptResumedAreTheRendersThatNeverStopped) {
     const Image whole = readExr(dir + "/whole.exr");
     expectIdentical(readExr(dir + "/same.exr"), whole);
     expectSameImage(readExr(dir + "/other.exr"), whole);
+  }
+}
+
+// pssmlt and mmlt: the chains (by global id, so any rank takes the ones it owns now), the bootstrap
+// targets (not run again), the film and mmlt's per-depth films. 48 chains on 40 x 30: 25 steps a
+// round, 4 and 8 mutations per pixel end on whole rounds.
+TEST(Checkpoint, MarkovChainRendersResumedAreTheRendersThatNeverStopped) {
+  for (const std::string integrator : {"pssmlt", "mmlt"}) {
+    const std::string dir = makeTempDir("checkpoint-" + integrator);
+    const std::string common = " --integrator " + integrator + " --chains 48 --width 40 --height 30 --seed 3";
+    render(2, "cornell-box", "-o " + dir + "/whole.exr --mutations-per-pixel 8" + common);
+    render(2, "cornell-box", "-o " + dir + "/half.exr --mutations-per-pixel 4 --checkpoint " + dir + "/ck" + common);
+    expectResumedIs(readExr(dir + "/whole.exr"), dir, "cornell-box", "--mutations-per-pixel 8 --resume " + dir + "/ck" + common);
+    for (const std::string& other : {" --integrator " + std::string(integrator == "pssmlt" ? "mmlt" : "pssmlt") +
+                                         " --chains 48 --width 40 --height 30 --seed 3",
+                                     " --integrator " + integrator + " --chains 48 --width 40 --height 30 --seed 4"}) {
+      const CommandResult r =
+          render(0, "cornell-box", "-o " + dir + "/refused.exr --mutations-per-pixel 8 --resume " + dir + "/ck" + other, true);
+      EXPECT_EQ(r.exitCode, 2) << r.output;
+      EXPECT_NE(r.output.find(dir + "/ck/checkpoint.relt"), std::string::npos) << r.output;
+      EXPECT_FALSE(fileExists(dir + "/refused.exr"));
+    }
   }
 }
 
@@ -109,6 +136,24 @@ TEST(Checkpoint, ACheckpointLeftBySigtermOrAKilledRankResumesToTheUninterruptedI
     render(2, "cornell-box", "-o " + resumed + args + "--resume " + ck);
     expectIdentical(readExr(resumed), whole);
   }
+}
+
+// pssmlt stopped by SIGTERM to mpirun: the checkpoint of the round it stopped after resumes to the
+// uninterrupted image.
+TEST(Checkpoint, APssmltCheckpointLeftBySigtermResumesToTheUninterruptedImage) {
+  const std::string dir = makeTempDir("checkpoint-pssmlt-stopped");
+  const std::string args = " --integrator pssmlt --chains 64 --width 64 --height 64 --seed 9 --mutations-per-pixel 150 ";
+  render(2, "cornell-box", "-o " + dir + "/whole.exr" + args);
+  const std::string ck = dir + "/ck", out = dir + "/stopped.exr";
+  const SignalledRun run = runAndSignal(mpirun(2) + reltBinary() + " render " + sourcePath("scenes/cornell-box.gltf") +
+                                            " -o " + out + args + "--checkpoint " + ck + " --checkpoint-every 0.2",
+                                        dir + "/log.txt", "TERM");
+  EXPECT_LT(run.secondsAfterSignal, 10.0) << run.result.output;
+  EXPECT_NE(run.result.output.find("stopped early by a signal"), std::string::npos) << run.result.output;
+  EXPECT_TRUE(fileExists(out));
+  ASSERT_TRUE(fileExists(ck + "/checkpoint.relt")) << run.result.output;
+  render(2, "cornell-box", "-o " + dir + "/resumed.exr" + args + "--resume " + ck);
+  expectIdentical(readExr(dir + "/resumed.exr"), readExr(dir + "/whole.exr"));
 }
 
 // What cannot be continued is refused before any work, with one line naming the checkpoint.
