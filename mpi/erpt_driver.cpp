@@ -1,10 +1,64 @@
 #include "erpt_driver.h"
 
+#include <stdexcept>
+
+#include "checkpoint/checkpoint.h"
+#include "core/error.h"
+#include "core/words.h"
 #include "pass_loop.h"
 
 namespace relt::mpi {
+namespace {
 
-ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film) {
+ErptCounters sumOverRanks(const ErptCounters& local) {
+  ErptCounters s = local;
+  uint64_t* const fields[] = {&s.seeds, &s.chains, &s.mutations, &s.accepted, &s.invalidProposals};
+  std::vector<double> v;
+  for (uint64_t* f : fields) v.push_back(double(*f));
+  allreduceSum(v);  // one collective; exact, counts stay far below 2^53
+  for (size_t k = 0; k < v.size(); ++k) *fields[k] = uint64_t(v[k]);
+  return s;
+}
+
+// The checkpoint's root part: the normaliser (a resume does not run the bootstrap again), the
+// counters and the proposal tally, all summed over ranks; other ranks' parts are empty.
+std::vector<uint64_t> checkpointPart(const Session& session, const ErptOutcome& out, const ErptCounters& local) {
+  const ErptCounters c = sumOverRanks(local);
+  std::vector<double> proposals = out.proposals;
+  if (!proposals.empty()) reduceSumToRoot(proposals);
+  WordWriter w;
+  if (!session.isRoot()) return w.words();
+  w.f64(out.normaliser);
+  for (uint64_t v : {c.seeds, c.chains, c.mutations, c.accepted, c.invalidProposals}) w.u64(v);
+  w.f64s(proposals);
+  return std::move(w.words());
+}
+
+// The root takes the sums of the checkpoint, the other ranks start from zero; all take the normaliser.
+PassStart restore(const Session& session, const Resumed& resumed, Film& film, ErptOutcome& out, ErptCounters& local) {
+  resumed.restoreFilms({&film, 1});
+  try {
+    if (resumed.parts.empty()) throw std::runtime_error("the checkpoint holds no erpt state");
+    WordReader in(resumed.parts[0]);
+    out.normaliser = in.f64();
+    ErptCounters c;
+    for (uint64_t* v : {&c.seeds, &c.chains, &c.mutations, &c.accepted, &c.invalidProposals}) *v = in.u64();
+    const std::vector<double> proposals = in.f64s(out.proposals.size());
+    if (!in.done()) throw std::runtime_error("the checkpoint's erpt state does not match this render's");
+    if (session.isRoot()) {
+      local = c;
+      out.proposals = proposals;
+    }
+  } catch (const std::runtime_error& e) {
+    throw InputError(resumed.file, "", e.what());
+  }
+  return {resumed.progress.at("passes").get<int>(), resumed.progress.at("elapsed").get<double>()};
+}
+
+}  // namespace
+
+ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
+                    const CheckpointPlan& plan, const Resumed* resumed) {
   ErptSettings es;
   es.chainLength = settings.chainLength;
   es.sizes = KelemenSizes{settings.smallStepMin, settings.smallStepMax};
@@ -12,22 +66,29 @@ ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSett
   PtEvaluator eval(renderer.context(), settings.width, settings.height);
   const int bootstrap = 100000;
   ErptOutcome out;
-  out.normaliser = allreduceSum(erptBootstrapSum(eval, settings.seed, bootstrap, session.rank(), session.size())) /
-                   bootstrap;
-  // Passes of one seed per pixel, distributed and timed as pt's.
   ErptCounters local;
   if (settings.erptProposalFilter) out.proposals.assign(static_cast<size_t>(settings.width) * settings.height, 0.0);
   std::vector<double>* tally = settings.erptProposalFilter ? &out.proposals : nullptr;
-  const int passes = runPasses(session, settings, [&](uint64_t pass, int row) {
-    local.add(erptRow(eval, es, out.normaliser, settings.seed, pass, row, 1.0, film, tally));
-  });
+  PassStart start;
+  if (resumed)
+    start = restore(session, *resumed, film, out, local);
+  else
+    out.normaliser = allreduceSum(erptBootstrapSum(eval, settings.seed, bootstrap, session.rank(), session.size())) /
+                     bootstrap;
+  // Passes of one seed per pixel, distributed and timed as pt's.
+  const int passes = runPasses(
+      session, settings,
+      [&](uint64_t pass, int row) { local.add(erptRow(eval, es, out.normaliser, settings.seed, pass, row, 1.0, film, tally)); },
+      {}, {}, start,
+      [&, lastCheckpoint = start.elapsed](int done, double elapsed, bool more, bool save) mutable {
+        if (plan.dir.empty() || !(save || checkpointDue(plan.every, elapsed, lastCheckpoint, more))) return;
+        lastCheckpoint = elapsed;
+        const nlohmann::json progress = {{"passes", done}, {"elapsed", elapsed}, {"mutations", sumOverRanks(local).mutations}};
+        saveCheckpoint(plan, "erpt", progress, {&film, 1}, checkpointPart(session, out, local));
+      });
   out.seedsPerPixel = passes;
   if (tally) reduceSumToRoot(out.proposals);
-  out.counters.seeds = allreduceSum(local.seeds);
-  out.counters.chains = allreduceSum(local.chains);
-  out.counters.mutations = allreduceSum(local.mutations);
-  out.counters.accepted = allreduceSum(local.accepted);
-  out.counters.invalidProposals = allreduceSum(local.invalidProposals);
+  out.counters = sumOverRanks(local);
   return out;
 }
 

@@ -191,7 +191,7 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
   auto* checkpoint = cmd.add_option("--checkpoint", o.checkpoint.dir,
-                                    "relt, pt, bdpt: write a checkpoint into this folder (made if missing) when the "
+                                    "write a checkpoint into this folder (made if missing) when the "
                                     "render ends or is stopped, and every --checkpoint-every seconds");
   cmd.add_option("--checkpoint-every", o.checkpoint.every, "seconds between checkpoints (0: only at the end)")
       ->check(CLI::Range(0.0, 1e9))
@@ -333,9 +333,6 @@ int main(int argc, char** argv) {
     if (o.render.integrator == relt::Integrator::Erpt && o.render.snapshotEvery > 0.0)
       throw relt::InputError("", "--snapshot-every", "not available for erpt");
     checkReplicaOptions(o);
-    const bool checkpoints = !o.checkpoint.dir.empty() || !o.checkpoint.resume.empty();
-    if (checkpoints && o.render.integrator == relt::Integrator::Erpt)
-      throw relt::InputError("", "--checkpoint/--resume", "checkpoints are not yet available for " + o.integrator);
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
     relt::mpi::startStallWatchdog(o.stallTimeout);
     relt::mpi::runRender(session, o.render, o.checkpoint);

@@ -374,19 +374,21 @@ void runRender(const Session& session, RenderSettings settings, CheckpointPlan p
   }
   if (settings.integrator == Integrator::Erpt) {
     const auto renderStart = Clock::now();
-    const ErptOutcome o = runErpt(session, renderer, settings, film);
+    const ErptOutcome o = runErpt(session, renderer, settings, film, plan, resumed ? &*resumed : nullptr);
     const Gathered g = gatherAfterRender(renderStart, renderer, film);
     if (!session.isRoot()) return;
     Image image = Renderer::resolve(film, film.data(), o.seedsPerPixel);
     if (!o.proposals.empty()) applyProposalFilter(image, o.proposals);
     nlohmann::json j = commonStats(settings, session, g, image);
-    addMutationRates(j, o.counters.mutations, g, session.size());
+    addMutationRates(j, o.counters.mutations, g, session.size(),
+                     resumed ? resumed->progress.at("mutations").get<uint64_t>() : 0);
     j["spp"] = o.seedsPerPixel;
     j["seeds"] = o.counters.seeds;
     j["chains"] = o.counters.chains;
     j["acceptance"] = o.counters.mutations ? double(o.counters.accepted) / o.counters.mutations : 0.0;
     j["invalid_proposals"] = o.counters.invalidProposals;
     j["normaliser"] = o.normaliser;
+    if (resumed) j["resumed_from"] = {{"checkpoint", resumed->file}, {"progress", resumed->progress}};
     writeOutputs(settings, image, j, wallStart);
     std::fprintf(stderr, "relt: %llu seeds, %llu chains, %llu mutations, %.2f s; wrote %s\n",
                  static_cast<unsigned long long>(o.counters.seeds), static_cast<unsigned long long>(o.counters.chains),

@@ -56,6 +56,15 @@ void expectResumedIs(const Image& whole, const std::string& dir, const std::stri
   }
 }
 
+// A resume of DIR/ck by a render of `args` (another integrator or seed) is refused with exit 2,
+// naming the checkpoint, before any output.
+void expectRefused(const std::string& dir, const std::string& args) {
+  const CommandResult r = render(0, "cornell-box", "-o " + dir + "/refused.exr --resume " + dir + "/ck" + args, true);
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_NE(r.output.find(dir + "/ck/checkpoint.relt"), std::string::npos) << r.output;
+  EXPECT_FALSE(fileExists(dir + "/refused.exr"));
+}
+
 }  // namespace
 
 // relt on ring (mirrors: the tempered levels differ; the regularisation moves the targets before
@@ -94,16 +103,22 @@ TEST(Checkpoint, MarkovChainRendersResumedAreTheRendersThatNeverStopped) {
     render(2, "cornell-box", "-o " + dir + "/whole.exr --mutations-per-pixel 8" + common);
     render(2, "cornell-box", "-o " + dir + "/half.exr --mutations-per-pixel 4 --checkpoint " + dir + "/ck" + common);
     expectResumedIs(readExr(dir + "/whole.exr"), dir, "cornell-box", "--mutations-per-pixel 8 --resume " + dir + "/ck" + common);
-    for (const std::string& other : {" --integrator " + std::string(integrator == "pssmlt" ? "mmlt" : "pssmlt") +
-                                         " --chains 48 --width 40 --height 30 --seed 3",
-                                     " --integrator " + integrator + " --chains 48 --width 40 --height 30 --seed 4"}) {
-      const CommandResult r =
-          render(0, "cornell-box", "-o " + dir + "/refused.exr --mutations-per-pixel 8 --resume " + dir + "/ck" + other, true);
-      EXPECT_EQ(r.exitCode, 2) << r.output;
-      EXPECT_NE(r.output.find(dir + "/ck/checkpoint.relt"), std::string::npos) << r.output;
-      EXPECT_FALSE(fileExists(dir + "/refused.exr"));
-    }
+    const std::string other = integrator == "pssmlt" ? "mmlt" : "pssmlt";
+    expectRefused(dir, " --mutations-per-pixel 8 --integrator " + other + " --chains 48 --width 40 --height 30 --seed 3");
+    expectRefused(dir, " --mutations-per-pixel 8 --integrator " + integrator + " --chains 48 --width 40 --height 30 --seed 4");
   }
+}
+
+// erpt: the film, the passes done, the counters, the proposal tally and the normaliser (the
+// bootstrap is not run again).
+TEST(Checkpoint, ErptResumedIsTheRenderThatNeverStopped) {
+  const std::string dir = makeTempDir("checkpoint-erpt");
+  const std::string common = " --integrator erpt --erpt-proposal-filter --width 40 --height 30 --seed 3";
+  render(2, "cornell-box", "-o " + dir + "/whole.exr --spp 6" + common);
+  render(2, "cornell-box", "-o " + dir + "/half.exr --spp 2 --checkpoint " + dir + "/ck" + common);
+  expectResumedIs(readExr(dir + "/whole.exr"), dir, "cornell-box", "--spp 6 --resume " + dir + "/ck" + common);
+  expectRefused(dir, " --spp 6 --integrator pt --width 40 --height 30 --seed 3");
+  expectRefused(dir, " --spp 6 --integrator erpt --erpt-proposal-filter --width 40 --height 30 --seed 4");
 }
 
 // SIGTERM mid-render (to mpirun, which forwards it): every rank stops at the next round, writes

@@ -80,7 +80,6 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"SppAndTime", "render " + kScene + " -o OUT --spp 4 --time 2", "time"},
                       BadInvocation{"ZeroWidth", "render " + kScene + " -o OUT --width 0", "width"},
                       BadInvocation{"HugeWidth", "render " + kScene + " -o OUT --width 16385", "width"},
-                      BadInvocation{"CheckpointWithPssmlt", "render " + kScene + " -o OUT --integrator pssmlt --checkpoint OUT.d", "not yet pssmlt"},
                       BadInvocation{"CheckpointEveryAlone", "render " + kScene + " -o OUT --checkpoint-every 5", "--checkpoint"},
                       BadInvocation{"HugeDepth", "render " + kScene + " -o OUT --max-depth 100000", "max-depth"},
                       BadInvocation{"UnknownCamera", "render " + kScene + " -o OUT --camera nope --spp 1", "nope"},
