@@ -638,8 +638,13 @@ def water_box():
     """Kitaoka et al. 2009 Fig. 7: Cornell box half filled with water, same small ceiling light."""
     g = GltfScene("water-box")
     cornell_room(g)
+    # The water is in contact with the box: its sides, back and bottom lie 1 mm beyond the walls and the
+    # floor (no coincident faces), so the walls and the floor cut through it. The front face, which the
+    # camera looks through, stays 1 mm inside the open front. With a 1 mm air gap instead, the water's
+    # bottom and sides reflected the camera's grazing rays totally, hiding the floor and the lower walls,
+    # and only the bottom-back edge let them through (a row of bright dots).
     gap = 0.001
-    water = water_body(-1.0 + gap, 1.0 - gap, -1.0 + gap, 1.0 - gap, gap, water_height, water_grad, 48)
+    water = water_body(-1.0 - gap, 1.0 + gap, -1.0 - gap, 1.0 - gap, -gap, water_height, water_grad, 48)
     g.add_mesh("water", water, dielectric("water", 1.33), closed="outward")
     ceiling_light(g, "ceiling_light", emitter("small_light", (50.0, 50.0, 50.0)), 0.0, 0.05, 0.3, 0.3, 2.0)
     g.camera("camera", (0.0, 1.5, 3.5), (0.0, 0.9, 0.0), 2.0 * math.atan(0.0125 / 0.035))
@@ -822,12 +827,18 @@ DESCRIPTIONS = {
                   "as Fig. 6.",
         "what": "The glass-cube room filled to height 1 (half) with water: one closed dielectric (ior 1.33) "
                 "whose top is a gently wavy smooth surface (three sine waves, amplitude about 2 cm, 48 x 48 grid "
-                "with analytic normals) and whose sides and bottom are flat; it stays 1 mm clear of the walls "
-                "and floor. Small 0.3 x 0.3 ceiling light (radiance 50).",
-        "why": "The lit floor and the lower walls are seen only through the water surface, and they are lit "
-               "only through it: every visible path below the water is a caustic (L-S-D-S-E). The water "
-               "surface's radiance comes from the caustics on the floor; BPT renders it dark. Deep paths: "
-               "max_depth 16.",
+                "with analytic normals) and whose sides and bottom are flat. The water touches the box: its "
+                "sides, back and bottom lie 1 mm beyond the walls and the floor (|x| = 1.001, the back at "
+                "z = -1.001, the bottom at y = -0.001), so the walls and the floor cut through it without coincident faces; "
+                "its flat front face (z = 0.999), which the camera looks through, stays inside the open front "
+                "(two 1 mm slivers of it beyond the side walls are dark and a fraction of a pixel wide). "
+                "With a 1 mm air gap under and around the water instead, total internal reflection at its "
+                "bottom and sides hid the floor and the lower walls from the camera. Small 0.3 x 0.3 ceiling "
+                "light (radiance 50).",
+        "why": "The lit floor and the lower walls are seen only through the water (its wavy top or its flat "
+               "front face), and they are lit only through its top: every visible path below the water is a "
+               "caustic (L-S-D-S-E). The water surface's radiance comes from the caustics on the floor; BPT "
+               "renders it dark. Deep paths: max_depth 16.",
         "materials": "Lambert walls as in cornell-box; water: transmission 1, ior 1.33, roughness 0.",
     },
     "ring": {
@@ -944,7 +955,8 @@ def readme(built):
     w("- `extensionsUsed` lists every extension used; `extensionsRequired` is never set. "
       "No punctual lights: all lights are emissive quads.")
     w("- Objects that stand on a floor are lifted by 1 mm where coplanar faces would otherwise touch it "
-      "(dielectrics, the ring); opaque blocks are open at the bottom, like the classic Cornell blocks.")
+      "(dielectrics, the ring), except water-box's water, which reaches 1 mm into the floor and the walls; "
+      "opaque blocks are open at the bottom, like the classic Cornell blocks.")
     w("")
     w("## The scenes")
     for name, (g, extras) in built.items():
