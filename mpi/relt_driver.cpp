@@ -98,6 +98,62 @@ class MpiTransport final : public RoundTransport {
   std::vector<std::deque<std::unique_ptr<PendingAllgatherv>>> pending_;  // per group, oldest first
 };
 
+// The pool, films and schedule where the checkpoint left them; where the loop starts.
+RoundLoopStart restoreFrom(const Resumed& checkpoint, ReplicaPool& pool, std::vector<Film>& films,
+                           ReplicaSchedule& schedule) {
+  checkpoint.restoreFilms(films);
+  try {
+    pool.restore(checkpoint.parts);
+  } catch (const std::runtime_error& e) {
+    throw InputError(checkpoint.file, "", e.what());
+  }
+  RoundLoopStart start;
+  start.rounds = checkpoint.progress.at("rounds").get<uint64_t>();
+  start.elapsed = checkpoint.progress.at("elapsed").get<double>();
+  schedule.resumeAt(start.rounds, pool.stepsPerChain());
+  return start;
+}
+
+// What the render reports (collective): the loop's counts, every rank's timings and counters.
+ReltOutcome outcomeOf(const Session& session, const ReplicaPool& pool, const ReplicaSchedule& schedule,
+                      const RoundLoopResult& loop, double area, double elapsed, double roundCollective) {
+  const uint64_t rounds = loop.rounds;
+  const std::vector<double> stepMean = allgather(loop.stepMean), stepDeviation = allgather(loop.stepDeviation);
+  const std::vector<double> finishMean = allgather(loop.finishMean);
+  const std::vector<std::vector<double>> stepTrace = gatherToRoot(loop.stepTrace);
+  ReltOutcome out;
+  out.rounds = rounds;
+  out.stepsPerChain = schedule.stepsAfter(rounds);
+  out.ladders = pool.settings().ladders;
+  out.levels = pool.levels();
+  for (int k = 0; k < pool.levels(); ++k) out.levelNames.push_back(pool.family().name(k));
+  out.normalisers = pool.normalisers();
+  out.placement = pool.placement();
+  out.tally = pool.localDecisions() ? sumOverRanks(pool.tally()) : pool.tally();
+  out.roundTrips = pool.localDecisions() ? allreduceSum(pool.roundTrips().total()) : pool.roundTrips().total();
+  out.chainMoves = pool.chainMoves();
+  out.stepMean = stepMean;
+  out.stepDeviation = stepDeviation;
+  out.finishMean = finishMean;
+  out.stepTrace = stepTrace;
+  for (int r = 0; r < session.size(); ++r) out.chainsPerRank.push_back(pool.hostedCount(r));
+  out.bootstrapSamples = uint64_t(pool.settings().bootstrap);
+  out.resolveDivisor = replicaResolveDivisor(out.stepsPerChain, out.ladders, area);
+  out.loopSeconds = elapsed;
+  out.roundCollectiveSeconds = allgather(roundCollective);
+  uint64_t nonFinite = 0;
+  for (const LevelCounters& c : pool.hostedCounters()) nonFinite += c.nonFinite;
+  out.nonFinitePerRank = allgather(double(nonFinite));
+  for (const LevelCounters& c : pool.hostedCounters()) {
+    LevelCounters s;
+    static_cast<ChainCounters&>(s) = relt::mpi::sumOverRanks(static_cast<const ChainCounters&>(c));
+    s.nonFinite = allreduceSum(c.nonFinite);
+    s.seconds = allreduceSum(c.seconds);
+    out.perLevel.push_back(s);
+  }
+  return out;
+}
+
 }  // namespace
 
 ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSettings& settings,
@@ -129,17 +185,7 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   // duration, until the lagged elapsed times of two rounds have come back.
   const double perSample = bootstrapSeconds / std::max(1.0, double(rs.bootstrap) / session.size());
   if (!checkpoint) resumed.secondsPerRound = perSample * rs.exchangeInterval * double(pool.chainCount()) / session.size();
-  if (checkpoint) {
-    checkpoint->restoreFilms(films);
-    try {
-      pool.restore(checkpoint->parts);
-    } catch (const std::runtime_error& e) {
-      throw InputError(checkpoint->file, "", e.what());
-    }
-    resumed.rounds = checkpoint->progress.at("rounds").get<uint64_t>();
-    resumed.elapsed = checkpoint->progress.at("elapsed").get<double>();
-    schedule.resumeAt(resumed.rounds, pool.stepsPerChain());
-  }
+  if (checkpoint) resumed = restoreFrom(*checkpoint, pool, films, schedule);
   // A time budget counts the bootstrap too.
   resumed.elapsed += allreduceMax(since(bootstrapStart));
   const double collectiveBefore = collectiveSeconds();
@@ -184,46 +230,11 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   MpiTransport transport(session.rank());
   const RoundLoopResult loop = runRoundLoop(pool, schedule, transport, films, hooks, resumed);
   if (loop.stopped) markStopAgreed();
-  const uint64_t rounds = loop.rounds;
-  const std::vector<double> stepMean = allgather(loop.stepMean), stepDeviation = allgather(loop.stepDeviation);
-  const std::vector<double> finishMean = allgather(loop.finishMean);
-  const std::vector<std::vector<double>> stepTrace = gatherToRoot(loop.stepTrace);
   const double roundCollective = collectiveSeconds() - collectiveBefore;
   // The loop's agreed time is that of the messages read back (normaliser lag): the real end here.
   const double elapsed = allreduceMax(resumed.elapsed + since(start));
   if (session.isRoot() && tty && lastPrint > 0.0) std::fprintf(stderr, "\n");
-
-  ReltOutcome out;
-  out.rounds = rounds;
-  out.stepsPerChain = schedule.stepsAfter(rounds);
-  out.ladders = rs.ladders;
-  out.levels = pool.levels();
-  for (int k = 0; k < pool.levels(); ++k) out.levelNames.push_back(pool.family().name(k));
-  out.normalisers = pool.normalisers();
-  out.placement = pool.placement();
-  out.tally = pool.localDecisions() ? sumOverRanks(pool.tally()) : pool.tally();
-  out.roundTrips = pool.localDecisions() ? allreduceSum(pool.roundTrips().total()) : pool.roundTrips().total();
-  out.chainMoves = pool.chainMoves();
-  out.stepMean = stepMean;
-  out.stepDeviation = stepDeviation;
-  out.finishMean = finishMean;
-  out.stepTrace = stepTrace;
-  for (int r = 0; r < session.size(); ++r) out.chainsPerRank.push_back(pool.hostedCount(r));
-  out.bootstrapSamples = uint64_t(rs.bootstrap);
-  out.resolveDivisor = replicaResolveDivisor(out.stepsPerChain, rs.ladders, area);
-  out.loopSeconds = elapsed;
-  out.roundCollectiveSeconds = allgather(roundCollective);
-  uint64_t nonFinite = 0;
-  for (const LevelCounters& c : pool.hostedCounters()) nonFinite += c.nonFinite;
-  out.nonFinitePerRank = allgather(double(nonFinite));
-  for (const LevelCounters& c : pool.hostedCounters()) {
-    LevelCounters s;
-    static_cast<ChainCounters&>(s) = sumOverRanks(c);
-    s.nonFinite = allreduceSum(c.nonFinite);
-    s.seconds = allreduceSum(c.seconds);
-    out.perLevel.push_back(s);
-  }
-  return out;
+  return outcomeOf(session, pool, schedule, loop, area, elapsed, roundCollective);
 }
 
 }  // namespace relt::mpi

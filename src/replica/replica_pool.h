@@ -55,6 +55,7 @@ class ReplicaPool {
   ReplicaPool(const ReplicaPool&) = delete;  // chains refer to family_
   ReplicaPool& operator=(const ReplicaPool&) = delete;
 
+  const ReplicaSettings& settings() const { return settings_; }
   const LevelFamily& family() const { return family_; }
   const LevelEstimator& estimator() const { return estimator_; }
   int levels() const { return family_.levels(); }
