@@ -31,6 +31,8 @@ struct Fixture {
     settings.exchange.move = ExchangeMove::Permutation;
     settings.bootstrap = 4000;
   }
+  // Every bootstrap sample's features with seed 5, as one rank holds them after the allreduce.
+  std::vector<double> bootstrap() const { return bootstrapFeatures(*eval, settings.family, 5, settings.bootstrap, 0, 1); }
   std::unique_ptr<Renderer> renderer;
   std::unique_ptr<PssEvaluator> eval;
   ReplicaSettings settings;
@@ -355,8 +357,7 @@ TEST(RoundLoop, ATimeBudgetHoldsAfterAStall) {
   for (Placement placement : {Placement::Spread, Placement::Packed}) {
     Fixture fx;
     fx.settings.placement = placement;
-    const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
-    ReplicaPool pool(*fx.eval, fx.settings, 5, lum, 0, 1);
+    ReplicaPool pool(*fx.eval, fx.settings, 5, fx.bootstrap(), 0, 1);
     const ReplicaSchedule schedule(16.0 * 12.0, 15, 4, 20.0, 64.0);
     std::vector<Film> films(1, Film(16, 12));
     LocalTransport transport;
@@ -585,8 +586,7 @@ TEST(ReplicaPool, AfterTheRegularisationMovesTheNormalisersReadEveryRoundUntilAB
     fx.settings.family.levels = 4;
     fx.settings.family.regularisation = 0.05;
     fx.settings.family.regularisationDecay = 0.1;
-    const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
-    ReplicaPool pool(*fx.eval, fx.settings, 5, lum, 0, 1);
+    ReplicaPool pool(*fx.eval, fx.settings, 5, fx.bootstrap(), 0, 1);
     const ReplicaSchedule schedule(16.0 * 12.0, pool.chainCount(), fx.settings.exchangeInterval, std::nullopt, 2000.0);
     std::vector<Film> films(1, Film(16, 12));
     LocalTransport transport;
