@@ -46,6 +46,13 @@ std::vector<double> bootstrapTargets(PssEvaluator& eval, uint64_t seed, int coun
 // Chain c runs on rank c mod ranks; it makes an even share of all mutations.
 inline bool ownsChain(int chain, int rank, int ranks) { return chain % ranks == rank; }
 uint64_t chainMutations(uint64_t total, int chains, int chain);
+// The chains a render runs: with a mutation budget smaller than the chain count the last chains
+// would take no step, and mmlt's plan gives those whole path lengths, whose share of the image
+// would then be lost (a length's weight needs its mutations); so at most one chain per mutation.
+inline int chainsForBudget(int chains, bool timed, uint64_t totalMutations) {
+  if (timed || totalMutations >= uint64_t(chains)) return chains;
+  return int(totalMutations > 0 ? totalMutations : 1);
+}
 
 struct ChainCounters {
   uint64_t smallProposed = 0, smallAccepted = 0, largeProposed = 0, largeAccepted = 0;

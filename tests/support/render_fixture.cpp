@@ -75,9 +75,9 @@ Image renderChainsOrSamples(Renderer& renderer) {
     // One process plays every rank: all bootstrap samples, all chains (as mpi/pssmlt_driver does).
     PssmltSettings ps;
     ps.mutationsPerPixel = s.mutationsPerPixel.value_or(16.0);
-    ps.chains = s.chains;
     const double area = double(s.width) * s.height;
     const auto total = static_cast<uint64_t>(std::llround(ps.mutationsPerPixel * area));
+    ps.chains = chainsForBudget(s.chains, s.seconds.has_value(), total);
     std::vector<int> chains(static_cast<size_t>(ps.chains));
     for (int c = 0; c < ps.chains; ++c) chains[static_cast<size_t>(c)] = c;
     if (s.integrator == Integrator::Mmlt) {
