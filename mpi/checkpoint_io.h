@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "checkpoint/checkpoint.h"
 #include "film/film.h"
 
 namespace relt::mpi {
@@ -31,6 +32,14 @@ struct Resumed {
   // throws InputError on every rank if their number or size differs.
   void restoreFilms(std::span<Film> films) const;
 };
+
+// Whether the pass or round that just ended writes a checkpoint: the plan has a folder, and the
+// ranks agreed on a save request or checkpointDue says one is due; `last` then becomes `elapsed`.
+inline bool checkpointNow(const CheckpointPlan& plan, double elapsed, double& last, bool more, bool save = false) {
+  if (plan.dir.empty() || !(save || checkpointDue(plan.every, elapsed, last, more))) return false;
+  last = elapsed;
+  return true;
+}
 
 // `progress` is the integrator's (rounds or passes, elapsed time, ...); `part` this rank's state.
 void saveCheckpoint(const CheckpointPlan& plan, const char* integrator, const nlohmann::json& progress,

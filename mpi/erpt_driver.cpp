@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 
-#include "checkpoint/checkpoint.h"
 #include "core/error.h"
 #include "core/words.h"
 #include "pass_loop.h"
@@ -21,9 +20,8 @@ ErptCounters sumOverRanks(const ErptCounters& local) {
 }
 
 // The checkpoint's root part: the normaliser (a resume does not run the bootstrap again), the
-// counters and the proposal tally, all summed over ranks; other ranks' parts are empty.
-std::vector<uint64_t> checkpointPart(const Session& session, const ErptOutcome& out, const ErptCounters& local) {
-  const ErptCounters c = sumOverRanks(local);
+// counters summed over ranks and the proposal tally, reduced here; other ranks' parts are empty.
+std::vector<uint64_t> checkpointPart(const Session& session, const ErptOutcome& out, const ErptCounters& c) {
   std::vector<double> proposals = out.proposals;
   if (!proposals.empty()) reduceSumToRoot(proposals);
   WordWriter w;
@@ -81,10 +79,10 @@ ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSett
       [&](uint64_t pass, int row) { local.add(erptRow(eval, es, out.normaliser, settings.seed, pass, row, 1.0, film, tally)); },
       {}, {}, start,
       [&, lastCheckpoint = start.elapsed](int done, double elapsed, bool more, bool save) mutable {
-        if (plan.dir.empty() || !(save || checkpointDue(plan.every, elapsed, lastCheckpoint, more))) return;
-        lastCheckpoint = elapsed;
-        const nlohmann::json progress = {{"passes", done}, {"elapsed", elapsed}, {"mutations", sumOverRanks(local).mutations}};
-        saveCheckpoint(plan, "erpt", progress, {&film, 1}, checkpointPart(session, out, local));
+        if (!checkpointNow(plan, elapsed, lastCheckpoint, more, save)) return;
+        const ErptCounters sums = sumOverRanks(local);
+        const nlohmann::json progress = {{"passes", done}, {"elapsed", elapsed}, {"mutations", sums.mutations}};
+        saveCheckpoint(plan, "erpt", progress, {&film, 1}, checkpointPart(session, out, sums));
       });
   out.seedsPerPixel = passes;
   if (tally) reduceSumToRoot(out.proposals);

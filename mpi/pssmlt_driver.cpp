@@ -193,7 +193,7 @@ void ChainRender::loop(const SnapshotWriter& snapshot) {
   bool more = anyChains && schedule_.anotherRound(rounds_, elapsed_, pace.typical());
   while (more) {
     std::vector<uint64_t> steps;
-    for (int c : ownedChains(session_, ps_.chains))
+    for (int c : pool_.ids())
       steps.push_back(schedule_.doneAfter(rounds_ + 1, c) - schedule_.doneAfter(rounds_, c));
     if (pool_.size() > 0) pool_.run(steps, film_);
     ++rounds_;
@@ -213,10 +213,7 @@ void ChainRender::loop(const SnapshotWriter& snapshot) {
       lastSnapshot = elapsed_;
       writeSnapshot(snapshot);
     }
-    if (!plan_.dir.empty() && (agreed.save || checkpointDue(plan_.every, elapsed_, lastCheckpoint, more))) {
-      lastCheckpoint = elapsed_;
-      writeCheckpoint(elapsed_);
-    }
+    if (checkpointNow(plan_, elapsed_, lastCheckpoint, more, agreed.save)) writeCheckpoint(elapsed_);
   }
   if (session_.isRoot() && tty && printed) std::fprintf(stderr, "\n");
 }
@@ -235,13 +232,14 @@ PssmltOutcome ChainRender::outcome() {
 }  // namespace
 
 ChainCounters sumOverRanks(const ChainCounters& c) {
-  ChainCounters s;
-  s.largeTargetSum = allreduceSum(c.largeTargetSum);
-  s.smallProposed = allreduceSum(c.smallProposed);
-  s.smallAccepted = allreduceSum(c.smallAccepted);
-  s.largeProposed = allreduceSum(c.largeProposed);
-  s.largeAccepted = allreduceSum(c.largeAccepted);
-  s.invalidProposals = allreduceSum(c.invalidProposals);
+  ChainCounters s = c;
+  uint64_t* const counts[] = {&s.smallProposed, &s.smallAccepted, &s.largeProposed, &s.largeAccepted,
+                              &s.invalidProposals};
+  std::vector<double> v = {s.largeTargetSum};
+  for (uint64_t* n : counts) v.push_back(double(*n));
+  allreduceSum(v);  // one collective (mmlt sums one per path length); counts stay far below 2^53
+  s.largeTargetSum = v[0];
+  for (size_t k = 0; k < std::size(counts); ++k) *counts[k] = uint64_t(v[k + 1]);
   return s;
 }
 

@@ -184,8 +184,10 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   // A bootstrap sample costs about what a mutation does: the agreed first guess of a round's
   // duration, until the lagged elapsed times of two rounds have come back.
   const double perSample = bootstrapSeconds / std::max(1.0, double(rs.bootstrap) / session.size());
-  if (!checkpoint) resumed.secondsPerRound = perSample * rs.exchangeInterval * double(pool.chainCount()) / session.size();
-  if (checkpoint) resumed = restoreFrom(*checkpoint, pool, films, schedule);
+  if (checkpoint)
+    resumed = restoreFrom(*checkpoint, pool, films, schedule);
+  else
+    resumed.secondsPerRound = perSample * rs.exchangeInterval * double(pool.chainCount()) / session.size();
   // A time budget counts the bootstrap too.
   resumed.elapsed += allreduceMax(since(bootstrapStart));
   const double collectiveBefore = collectiveSeconds();
@@ -198,7 +200,6 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
     if (session.isRoot()) snapshot(sums, replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
   };
   auto writeCheckpoint = [&](uint64_t rounds, double elapsed) {
-    lastCheckpoint = elapsed;
     const nlohmann::json progress = {
         {"rounds", rounds}, {"elapsed", elapsed}, {"steps_per_chain", schedule.stepsAfter(rounds)}};
     saveCheckpoint(plan, "relt", progress, films, pool.checkpointPart());
@@ -217,7 +218,7 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
                    progressLine(schedule.fraction(rounds, elapsed), elapsed, rate, "mutations").c_str());
     }
     if (snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more)) writeSnapshot(rounds, elapsed);
-    if (!plan.dir.empty() && checkpointDue(plan.every, elapsed, lastCheckpoint, more)) writeCheckpoint(rounds, elapsed);
+    if (checkpointNow(plan, elapsed, lastCheckpoint, more)) writeCheckpoint(rounds, elapsed);
   };
   // Ranks whose requests travel in different groups' messages agree on them a round apart: one
   // save for them all (the agreed time is the same on every rank).
@@ -225,7 +226,7 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
     if (lastSave >= 0.0 && elapsed - lastSave < 0.25) return;
     lastSave = elapsed;
     writeSnapshot(rounds, elapsed);
-    if (!plan.dir.empty()) writeCheckpoint(rounds, elapsed);
+    if (checkpointNow(plan, elapsed, lastCheckpoint, true, true)) writeCheckpoint(rounds, elapsed);
   };
   MpiTransport transport(session.rank());
   const RoundLoopResult loop = runRoundLoop(pool, schedule, transport, films, hooks, resumed);

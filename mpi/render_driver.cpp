@@ -417,8 +417,7 @@ void runRender(const Session& session, RenderSettings settings, CheckpointPlan p
       },
       start,
       [&, lastCheckpoint = start.elapsed](int done, double elapsed, bool more, bool save) mutable {
-        if (plan.dir.empty() || !(save || checkpointDue(plan.every, elapsed, lastCheckpoint, more))) return;
-        lastCheckpoint = elapsed;
+        if (!checkpointNow(plan, elapsed, lastCheckpoint, more, save)) return;
         const nlohmann::json progress = {
             {"passes", done}, {"elapsed", elapsed}, {"samples", earlierSamples + allreduceSum(renderer.samples())}};
         saveCheckpoint(plan, integratorName(settings.integrator), progress, {&film, 1}, {});

@@ -22,6 +22,8 @@ class ChainPool {
   // mmlt, stratified: adds weight[d] x depth d's film to `into` (see mmltDepthWeights); else nothing.
   void mergeDepthFilms(const std::vector<double>& weight, Film& into) const;
   size_t size() const { return chains_.size(); }
+  // The global ids of the chains, in the order of `run`'s steps.
+  const std::vector<int>& ids() const { return ids_; }
 
   // mmlt, stratified: depth d's film (index d - 1), made on all ranks alike even without chains, so
   // that checkpoints reduce the same films everywhere; else none.
