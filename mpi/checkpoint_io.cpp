@@ -24,16 +24,16 @@ void saveCheckpoint(const CheckpointPlan& plan, const char* integrator, const nl
                     std::span<const Film> films, const std::vector<uint64_t>& part) {
   const double start = MPI_Wtime();
   std::vector<std::vector<double>> sums;
-  for (const Film& f : films) {
-    sums.push_back(f.data());
-    reduceSumToRoot(sums.back());
-  }
+  for (const Film& f : films) sums.push_back(f.data());
+  if (plan.directFilm) sums.push_back(plan.directFilm->data());
+  for (std::vector<double>& s : sums) reduceSumToRoot(s);
   const std::vector<std::vector<uint64_t>> parts = gatherToRoot(part);
   std::string problem;
   if (isRoot()) {
     Checkpoint c;
     c.header = {{"format", 1},          {"integrator", integrator}, {"ranks", parts.size()},
                 {"progress", progress}, {"identity", plan.identity}, {"settings", plan.settings}};
+    if (!plan.direct.is_null()) c.header["progress"]["direct"] = plan.direct;
     WordWriter w;
     w.u64(sums.size());
     w.u64(sums.empty() ? 0 : sums[0].size());
@@ -96,6 +96,18 @@ void Resumed::restoreFilms(std::span<Film> into) const {
   if (filmCount != into.size() || (filmCount > 0 && filmLength != into[0].data().size()))
     throw InputError(file, "", "the checkpoint's films do not match this render's");
   for (size_t k = 0; k < films.size(); ++k) into[k].data() = films[k];
+}
+
+std::vector<double> Resumed::takeLastFilm() {
+  if (filmCount == 0) throw InputError(file, "", "the checkpoint's films do not match this render's");
+  std::vector<double> last(filmLength);
+  if (!films.empty()) {
+    last = std::move(films.back());
+    films.pop_back();
+  }
+  --filmCount;
+  broadcastFromRoot(last);
+  return last;
 }
 
 }  // namespace relt::mpi

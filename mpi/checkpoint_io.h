@@ -20,6 +20,10 @@ struct CheckpointPlan {
   std::string resume;       // --resume: the checkpoint to continue ("" = start afresh)
   nlohmann::json identity;  // imageIdentity() of this render (the root's; only it reads and writes)
   nlohmann::json settings;  // this render's settings, for the reader of the file (the root's)
+  // pssmlt and relt: the direct-emission pass, in every checkpoint: its progress under "direct"
+  // (direct_driver.h says what is in it) and its film, if it has rays, after the integrator's.
+  nlohmann::json direct;
+  const Film* directFilm = nullptr;
 };
 
 struct Resumed {
@@ -31,6 +35,8 @@ struct Resumed {
   // Puts the reduced films into the root's `films` (the other ranks' stay empty to add to them);
   // throws InputError on every rank if their number or size differs.
   void restoreFilms(std::span<Film> films) const;
+  // Takes the last film out (the direct-emission pass) and returns it on every rank (collective).
+  std::vector<double> takeLastFilm();
 };
 
 // Whether the pass or round that just ended writes a checkpoint: the plan has a folder, and the
@@ -42,6 +48,7 @@ inline bool checkpointNow(const CheckpointPlan& plan, double elapsed, double& la
 }
 
 // `progress` is the integrator's (rounds or passes, elapsed time, ...); `part` this rank's state.
+// The plan's direct-emission pass, if any, is added to both.
 void saveCheckpoint(const CheckpointPlan& plan, const char* integrator, const nlohmann::json& progress,
                     std::span<const Film> films, const std::vector<uint64_t>& part);
 // Checkpoints this process wrote (or took part in) and the seconds they took, for stats.json.

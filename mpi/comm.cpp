@@ -283,6 +283,14 @@ void broadcastFromRoot(std::vector<uint64_t>& words) {
   });
 }
 
+void broadcastFromRoot(std::vector<double>& values) {
+  std::vector<uint64_t> words(values.size());
+  std::memcpy(words.data(), values.data(), values.size() * sizeof(double));
+  broadcastFromRoot(words);
+  values.resize(words.size());
+  std::memcpy(values.data(), words.data(), words.size() * sizeof(double));
+}
+
 void broadcastFromRoot(std::string& text) {
   std::vector<uint64_t> words((text.size() + 7) / 8 + 1, 0);
   words[0] = text.size();

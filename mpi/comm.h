@@ -94,6 +94,7 @@ std::vector<std::vector<uint64_t>> gatherToRoot(const std::vector<uint64_t>& min
 std::vector<std::vector<double>> gatherToRoot(const std::vector<double>& mine);
 // The root's words (or text) on every rank.
 void broadcastFromRoot(std::vector<uint64_t>& words);
+void broadcastFromRoot(std::vector<double>& values);
 void broadcastFromRoot(std::string& text);
 // A problem the root found (empty: none) becomes the same InputError on every rank.
 void shareRootProblem(std::string problem);

@@ -13,8 +13,8 @@
 #include "checkpoint/checkpoint.h"
 #include "checkpoint_io.h"
 #include "core/error.h"
-#include "render/direct_pass.h"
 #include "render/renderer.h"
+#include "direct_driver.h"
 #include "erpt_driver.h"
 #include "interrupt.h"
 #include "pass_loop.h"
@@ -112,36 +112,6 @@ struct Gathered {
   std::vector<double> collective;
   std::vector<std::string> hosts;  // each rank's processor name
 };
-
-// pssmlt and relt: the directly seen emission, rendered apart (row r on rank r mod P, every pixel on
-// its own streams, so the image does not depend on P) and reduced; render/direct_pass.h decides how
-// many rays, and whether at all.
-struct DirectEstimate {
-  Image image;           // on the root; empty elsewhere and without a pass
-  int spp = 0;           // rays per pixel; 0: none (the chains estimate that emission too)
-  uint64_t dropped = 0;  // non-finite samples, summed over ranks
-  double seconds = 0.0;  // the slowest rank's time for it, the same on every rank
-};
-DirectEstimate directEmission(const Session& session, Renderer& renderer, const RenderSettings& settings) {
-  DirectEstimate out;
-  if (!directEmissionApart(settings)) return out;
-  Film film(settings.width, settings.height);
-  const RankReduce reduce{[](double v) { return allreduceMax(v); }, [](double v) { return allreduceSum(v); },
-                          [] { return stopSignalled(); }};
-  const DirectPass pass = renderDirectPass(renderer, session.rank(), session.size(), film, reduce);
-  std::vector<double> sums = film.data();
-  reduceSumToRoot(sums);
-  out.spp = pass.spp;
-  out.dropped = allreduceSum(film.droppedSamples());
-  out.seconds = pass.seconds;
-  if (session.isRoot() && pass.spp > 0) out.image = Renderer::resolve(film, sums, pass.spp);
-  // It is not cut short (a part of the image would lack it), so a large N can eat a short budget.
-  if (session.isRoot() && settings.seconds && out.seconds > 0.5 * *settings.seconds)
-    std::fprintf(stderr,
-                 "relt: warning: --direct-emission-spp %d took %.1f s of the %.1f s budget, leaving the chains %.1f s\n",
-                 pass.spp, out.seconds, *settings.seconds, std::max(0.0, *settings.seconds - out.seconds));
-  return out;
-}
 
 // stats.json: the pass's rays per pixel as taken (0: no emitter in view, the chains did it) and time.
 void addDirectStats(nlohmann::json& j, const RenderSettings& settings, const DirectEstimate& direct) {
@@ -245,12 +215,11 @@ nlohmann::json reltStats(const mpi::ReltOutcome& o) {
 }
 
 void renderRelt(const Session& session, Renderer& renderer, const RenderSettings& settings, Clock::time_point wallStart,
-                const CheckpointPlan& plan, const Resumed* resumed) {
+                Clock::time_point renderStart, const DirectEstimate& direct, const CheckpointPlan& plan,
+                const Resumed* resumed) {
   const bool layers = settings.replica.perLevel;
   std::vector<Film> films;
-  const auto renderStart = Clock::now();
   int snapshots = 0;
-  const DirectEstimate direct = directEmission(session, renderer, settings);
   const mpi::ReltOutcome o = mpi::runRelt(session, renderer, chainSettings(settings, direct), films,
                                           [&](const std::vector<double>& sums, double d) {
     writeImages(settings, withDirect(Renderer::resolve(films[0], sums, d), direct.image));
@@ -300,11 +269,10 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
 
 // pssmlt and mmlt: the chains' image (plus the direct emission apart), their counters in stats.json.
 void renderChains(const Session& session, Renderer& renderer, const RenderSettings& settings, Clock::time_point wallStart,
-                  const CheckpointPlan& plan, const Resumed* resumed) {
+                  Clock::time_point renderStart, const DirectEstimate& direct, const CheckpointPlan& plan,
+                  const Resumed* resumed) {
   Film film(settings.width, settings.height);
-  const auto renderStart = Clock::now();
   int snapshots = 0;
-  const DirectEstimate direct = directEmission(session, renderer, settings);
   const PssmltOutcome o = runPssmlt(session, renderer, chainSettings(settings, direct), film,
                                     [&](const std::vector<double>& sums, double d) {
     writeImages(settings, withDirect(Renderer::resolve(film, sums, d), direct.image));
@@ -345,6 +313,22 @@ void renderChains(const Session& session, Renderer& renderer, const RenderSettin
                mutations / std::max(g.renderSeconds, 1e-9) * 1e-6, settings.output.c_str());
 }
 
+// pssmlt and relt stopped during the direct-emission pass: the image of the pass so far (the chains
+// have not started; its checkpoint is written), and the stats.
+void finishInThePass(const Session& session, const Renderer& renderer, const RenderSettings& settings,
+                     Clock::time_point wallStart, Clock::time_point renderStart, const DirectEstimate& direct) {
+  Film none(settings.width, settings.height);
+  const Gathered g = gatherAfterRender(renderStart, renderer, none);
+  if (!session.isRoot()) return;
+  const Image image = direct.spp > 0 ? direct.image : Renderer::resolve(none, none.data(), 1.0);
+  nlohmann::json j = commonStats(settings, session, g, image);
+  j["nan_inf_samples_dropped"] = direct.dropped;
+  addDirectStats(j, settings, direct);
+  writeOutputs(settings, image, j, wallStart);
+  std::fprintf(stderr, "relt: stopped in the direct-emission pass (%d rays per pixel), %.2f s; wrote %s\n", direct.spp,
+               g.renderSeconds, settings.output.c_str());
+}
+
 }  // namespace
 
 void runRender(const Session& session, RenderSettings settings, CheckpointPlan plan) {
@@ -363,15 +347,27 @@ void runRender(const Session& session, RenderSettings settings, CheckpointPlan p
   std::optional<Resumed> resumed;
   if (!plan.resume.empty()) resumed = loadCheckpoint(plan, integratorName(settings.integrator));
 
-  if (settings.integrator == Integrator::Relt) {
-    renderRelt(session, renderer, settings, wallStart, plan, resumed ? &*resumed : nullptr);
+  if (settings.integrator == Integrator::Relt || isMarkovChain(settings.integrator)) {
+    const auto renderStart = Clock::now();
+    const DirectEstimate direct = directEmission(session, renderer, settings, plan, resumed, [&](const Image& image) {
+      writeImages(settings, image);
+    });
+    if (direct.stopped) {
+      finishInThePass(session, renderer, settings, wallStart, renderStart, direct);
+      return;
+    }
+    if (directEmissionApart(settings)) {
+      plan.direct = direct.progress();
+      if (direct.spp > 0) plan.directFilm = &direct.film;
+    }
+    const Resumed* chains = resumed ? &*resumed : nullptr;
+    if (settings.integrator == Integrator::Relt)
+      renderRelt(session, renderer, settings, wallStart, renderStart, direct, plan, chains);
+    else
+      renderChains(session, renderer, settings, wallStart, renderStart, direct, plan, chains);
     return;
   }
   Film film(settings.width, settings.height);
-  if (isMarkovChain(settings.integrator)) {
-    renderChains(session, renderer, settings, wallStart, plan, resumed ? &*resumed : nullptr);
-    return;
-  }
   if (settings.integrator == Integrator::Erpt) {
     const auto renderStart = Clock::now();
     const ErptOutcome o = runErpt(session, renderer, settings, film, plan, resumed ? &*resumed : nullptr);

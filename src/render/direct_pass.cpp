@@ -1,6 +1,7 @@
 #include "render/direct_pass.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 
 #include "render/schedule.h"
@@ -9,34 +10,40 @@ namespace relt {
 
 namespace {
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-// Extends the pass over rays [done, end) of every pixel, when a rank may be asked to stop in
-// chunks, agreeing on a stop request after each. A chunk's size follows the slowest rank's time for
-// the last one; the film does not depend on it (rays in two ranges sum to the film of one).
+// Extends the pass over rays [done, end) of every pixel, when the ranks agree between chunks, in
+// chunks, agreeing on stop and save requests after each. A chunk's size follows the slowest rank's
+// time for the last one; the film does not depend on it (rays in two ranges sum to the film of one).
 struct ChunkedPass {
   Renderer& renderer;
   int firstRow, rowStride;
   Film& film;
   const RankReduce& reduce;
+  double earlier;       // seconds of the render this one continues
+  Clock::time_point start;
   uint32_t done = 0, chunk = uint32_t(kDirectProbeSpp);
+  double agreed = earlier;  // the slowest rank's elapsed seconds after the last chunk
   bool stopped = false;
 
   bool extendTo(uint32_t end) {
     while (done < end && !stopped) {
-      const uint32_t next = reduce.stop ? std::min(end, done + chunk) : end;
-      const auto t0 = std::chrono::steady_clock::now();
+      const uint32_t next = reduce.agree ? std::min(end, done + chunk) : end;
       renderer.renderDirect(firstRow, rowStride, film, done, next);
       const uint32_t taken = next - done;
       done = next;
-      if (!reduce.stop) break;
-      chunk = nextDirectChunk(taken, reduce.max(secondsSince(t0)));
-      stopped = reduce.max(reduce.stop() ? 1.0 : 0.0) > 0.0;
+      if (!reduce.agree) break;
+      const double before = agreed;
+      const ChunkAgreement a = reduce.agree(earlier + secondsSince(start));
+      agreed = a.elapsed;
+      chunk = nextDirectChunk(taken, agreed - before);
+      stopped = a.stop;
+      if (reduce.chunkDone) reduce.chunkDone(DirectPass{int(done), agreed, stopped}, a.save || a.stop);
     }
     return !stopped;
   }
+  double elapsed() const { return reduce.max(earlier + secondsSince(start)); }
 };
 
 // Whether any rank's probe rays saw emission (a NaN sum was dropped by the film).
@@ -51,30 +58,32 @@ bool probeSeesEmission(Renderer& renderer, int firstRow, int rowStride, const Ra
 
 }  // namespace
 
-DirectPass renderDirectPass(Renderer& renderer, int firstRow, int rowStride, Film& film, const RankReduce& reduce) {
+DirectPass renderDirectPass(Renderer& renderer, int firstRow, int rowStride, Film& film, const RankReduce& reduce,
+                            const DirectPassStart& start) {
   const RenderSettings& s = renderer.settings();
   DirectPass out;
   if (!directEmissionApart(s)) return out;
-  const auto start = std::chrono::steady_clock::now();
+  ChunkedPass pass{renderer, firstRow, rowStride, film, reduce, start.seconds, Clock::now()};
+  pass.done = uint32_t(start.spp);
   const bool automatic = s.directSpp == kDirectSppAuto;
   const int fixed = !automatic ? s.directSpp : s.seconds ? 0 : autoDirectSpp(s.mutationsPerPixel.value_or(16.0));
-  if (automatic && !probeSeesEmission(renderer, firstRow, rowStride, reduce)) {  // no emitter in view
+  if (automatic && start.spp == 0 && !probeSeesEmission(renderer, firstRow, rowStride, reduce)) {  // none in view
     renderer.keepDirectEmissionInChains();
-    out.seconds = reduce.max(secondsSince(start));
+    out.seconds = pass.elapsed();
     return out;
   }
-  ChunkedPass pass{renderer, firstRow, rowStride, film, reduce};
   if (fixed > 0) {
     pass.extendTo(uint32_t(fixed));
-  } else if (pass.extendTo(uint32_t(kDirectMinSpp))) {
-    // A timed auto pass: doublings decided on the slowest rank's time.
-    while (pass.done < uint32_t(kDirectMaxSpp) && doubleDirectPass(reduce.max(secondsSince(start)), *s.seconds) &&
+  } else if (pass.extendTo(std::max(uint32_t(kDirectMinSpp), std::bit_ceil(pass.done)))) {
+    // A timed auto pass: doublings decided on the slowest rank's time (a resumed pass first ends
+    // the doubling it was stopped in).
+    while (pass.done < uint32_t(kDirectMaxSpp) && doubleDirectPass(pass.elapsed(), *s.seconds) &&
            pass.extendTo(2 * pass.done)) {
     }
   }
   out.spp = int(pass.done);
   out.stopped = pass.stopped;
-  out.seconds = reduce.max(secondsSince(start));
+  out.seconds = pass.elapsed();
   return out;
 }
 

@@ -10,16 +10,33 @@
 
 namespace relt {
 
+struct DirectPass {
+  int spp = 0;           // rays per pixel taken; 0: no pass (the chains estimate that emission too)
+  double seconds = 0.0;  // the slowest rank's time for it (an earlier render's included)
+  bool stopped = false;  // a rank was asked to stop: spp is what every pixel had by then
+};
+
+// What the ranks agreed on after a chunk of the pass: the slowest rank's elapsed seconds, and
+// whether any was asked to stop or to save (write the pass so far: its image and a checkpoint).
+struct ChunkAgreement {
+  double elapsed = 0.0;
+  bool stop = false, save = false;
+};
+
 struct RankReduce {
   std::function<double(double)> max;  // over all ranks
   std::function<double(double)> sum;
-  std::function<bool()> stop = {};    // this rank was asked to stop (optional)
+  // Optional: the pass is taken in chunks, the ranks agreeing after each (from this rank's elapsed
+  // seconds) and `chunkDone` told the pass so far and whether a save was agreed.
+  std::function<ChunkAgreement(double)> agree = {};
+  std::function<void(const DirectPass& sofar, bool save)> chunkDone = {};
 };
 
-struct DirectPass {
-  int spp = 0;           // rays per pixel taken; 0: no pass (the chains estimate that emission too)
-  double seconds = 0.0;  // the slowest rank's time for it
-  bool stopped = false;  // a rank was asked to stop: spp is what every pixel had by then
+// A pass continued from a checkpoint: the film holds `spp` rays of every pixel of this rank's rows,
+// taken in `seconds` (a pass with spp > 0 has seen emission: the probe is not traced again).
+struct DirectPassStart {
+  int spp = 0;
+  double seconds = 0.0;
 };
 
 // Renders the pass into `film` for rows firstRow, firstRow + rowStride, ... and returns its size
@@ -28,8 +45,9 @@ struct DirectPass {
 // the paths of one segment back to the chains (Renderer::keepDirectEmissionInChains) and returns
 // spp 0. Then it takes the given N, a fixed budget's autoDirectSpp, or for a timed render
 // kDirectMinSpp and then doublings while doubleDirectPass allows. Rays are taken in chunks of
-// every pixel of about kDirectChunkSeconds; between chunks the ranks agree on a stop request, and
-// a stopped pass keeps the chunks done. Call it before the chains start.
-DirectPass renderDirectPass(Renderer& renderer, int firstRow, int rowStride, Film& film, const RankReduce& reduce);
+// every pixel of about kDirectChunkSeconds; between chunks the ranks agree on stop and save
+// requests, and a stopped pass keeps the chunks done. Call it before the chains start.
+DirectPass renderDirectPass(Renderer& renderer, int firstRow, int rowStride, Film& film, const RankReduce& reduce,
+                            const DirectPassStart& start = {});
 
 }  // namespace relt

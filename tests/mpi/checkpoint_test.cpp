@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 #include "image/image.h"
 #include "test_support.h"
 
@@ -170,6 +172,42 @@ TEST(Checkpoint, APssmltCheckpointLeftBySigtermResumesToTheUninterruptedImage) {
   ASSERT_TRUE(fileExists(ck + "/checkpoint.relt")) << run.result.output;
   render(2, "cornell-box", "-o " + dir + "/resumed.exr" + args + "--resume " + ck);
   expectIdentical(readExr(dir + "/resumed.exr"), readExr(dir + "/whole.exr"));
+}
+
+// A stop during pssmlt's or relt's direct-emission pass (here a long one: 2^17 rays per pixel,
+// about 8 s on 2 ranks) writes the image of the pass so far and a checkpoint of it, before any
+// chain starts; the resume goes on with the pass from there and then runs the chains: the image
+// of the render that never stopped (relt also on 3 ranks), and its checkpoints keep the pass (a
+// resume of the last one renders no ray of it again).
+TEST(Checkpoint, AStopInTheDirectEmissionPassResumesToTheUninterruptedImage) {
+  for (const std::string integrator : {"relt", "pssmlt"}) {
+    const std::string dir = makeTempDir("checkpoint-direct-" + integrator);
+    const std::string args = " --integrator " + integrator + " --width 40 --height 30 --seed 4 --mutations-per-pixel 4 "
+                             "--direct-emission-spp 131072 ";
+    render(2, "cornell-box", "-o " + dir + "/whole.exr" + args);
+    const Image whole = readExr(dir + "/whole.exr");
+    const std::string ck = dir + "/ck", out = dir + "/stopped.exr";
+    const SignalledRun run = runAndSignal(mpirun(2) + reltBinary() + " render " + sourcePath("scenes/cornell-box.gltf") +
+                                              " -o " + out + args + "--checkpoint " + ck + " --stats " + dir + "/stopped.json",
+                                          dir + "/log.txt", "TERM");
+    ASSERT_NE(run.result.output.find("stopped in the direct-emission pass"), std::string::npos) << run.result.output;
+    ASSERT_TRUE(fileExists(out));
+    const int spp = nlohmann::json::parse(std::ifstream(dir + "/stopped.json"))["direct_emission_spp"].get<int>();
+    EXPECT_GT(spp, 0);
+    EXPECT_LT(spp, 131072);
+    for (int ranks : integrator == "relt" ? std::vector<int>{2, 3} : std::vector<int>{2}) {
+      const std::string resumed = dir + "/resumed" + std::to_string(ranks) + ".exr";
+      render(ranks, "cornell-box", "-o " + resumed + args + "--resume " + ck + " --checkpoint " + dir + "/again");
+      if (ranks == 2)
+        expectIdentical(readExr(resumed), whole);
+      else
+        expectSameImage(readExr(resumed), whole);
+    }
+    const std::string stats = dir + "/again.json";
+    render(1, "cornell-box", "-o " + dir + "/again.exr --stats " + stats + args + "--resume " + dir + "/again");
+    expectSameImage(readExr(dir + "/again.exr"), whole);
+    EXPECT_LT(nlohmann::json::parse(std::ifstream(stats))["render_seconds"].get<double>(), 2.0) << "the pass rendered again";
+  }
 }
 
 // What cannot be continued is refused before any work, with one line naming the checkpoint.

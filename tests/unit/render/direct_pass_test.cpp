@@ -166,7 +166,8 @@ TEST(DirectPass, AStopRequestEndsThePassBetweenChunksWithEveryPixelAlike) {
   RenderSettings s = small(1 << 14);
   Renderer renderer(withLightInView(), s);
   int asked = 0;
-  const RankReduce stopsAtTheThird{[](double v) { return v; }, [](double v) { return v; }, [&] { return ++asked == 3; }};
+  RankReduce stopsAtTheThird{[](double v) { return v; }, [](double v) { return v; }};
+  stopsAtTheThird.agree = [&](double elapsed) { return ChunkAgreement{elapsed, ++asked == 3, false}; };
   Film film(12, 10);
   const DirectPass pass = renderDirectPass(renderer, 0, 1, film, stopsAtTheThird);
   EXPECT_TRUE(pass.stopped);
@@ -175,4 +176,72 @@ TEST(DirectPass, AStopRequestEndsThePassBetweenChunksWithEveryPixelAlike) {
   Film expected(12, 10);
   renderer.renderDirect(0, 1, expected, 0, uint32_t(pass.spp));
   EXPECT_EQ(film.data(), expected.data());
+}
+
+// A checkpoint keeps the pass so far: continued from its rays per pixel, the pass ends on the
+// film of one that never stopped (each pixel's rays added in the same order).
+TEST(DirectPass, AResumedPassEndsOnTheFilmOfOneThatNeverStopped) {
+  RenderSettings s = small(256);
+  Renderer whole(withLightInView(), s);
+  Film expected(12, 10);
+  ASSERT_EQ(renderDirectPass(whole, 0, 1, expected, kOneRank).spp, 256);
+
+  Renderer first(withLightInView(), s);
+  int asked = 0;
+  RankReduce stopsAtTheSecond{[](double v) { return v; }, [](double v) { return v; }};
+  stopsAtTheSecond.agree = [&](double elapsed) { return ChunkAgreement{elapsed, ++asked == 2, false}; };
+  Film film(12, 10);
+  const DirectPass stopped = renderDirectPass(first, 0, 1, film, stopsAtTheSecond);
+  ASSERT_TRUE(stopped.stopped);
+  ASSERT_EQ(stopped.spp, 4 + 16);
+
+  Renderer resumed(withLightInView(), s);
+  const DirectPass pass = renderDirectPass(resumed, 0, 1, film, kOneRank, {stopped.spp, stopped.seconds});
+  EXPECT_EQ(pass.spp, 256);
+  EXPECT_FALSE(pass.stopped);
+  EXPECT_EQ(film.data(), expected.data());
+  EXPECT_EQ(resumed.context().settings.minDepth, 2) << "the chains still leave that emission to the pass";
+}
+
+// A timed pass stopped within a doubling (20 of 32 rays) first ends it, then doubles on the time
+// the checkpoint's seconds and its own add up to.
+TEST(DirectPass, AResumedTimedPassEndsTheDoublingItWasStoppedIn) {
+  RenderSettings s = small(kDirectSppAuto);
+  s.seconds = 100.0;  // share: 6 s
+  std::deque<double> slowest = {2.0, 4.0, 4.0};
+  const RankReduce scripted{[&](double) {
+                              const double t = slowest.front();
+                              slowest.pop_front();
+                              return t;
+                            },
+                            [](double v) { return v; }};
+  Renderer renderer(withLightInView(), s);
+  Film film(12, 10);
+  renderer.renderDirect(0, 1, film, 0, 20);
+  const DirectPass pass = renderDirectPass(renderer, 0, 1, film, scripted, {20, 1.5});
+  EXPECT_EQ(pass.spp, 64);  // to 32, doubled at 2 s, not at 4 s
+  EXPECT_EQ(pass.seconds, 4.0);
+  EXPECT_TRUE(slowest.empty());
+  Film expected(12, 10);
+  renderer.renderDirect(0, 1, expected, 0, 64);
+  EXPECT_EQ(film.data(), expected.data());
+}
+
+// A save request agreed between chunks is handed on with the pass so far; the pass goes on.
+TEST(DirectPass, ASaveRequestIsHandedOnWithThePassSoFarAndThePassGoesOn) {
+  Renderer renderer(withLightInView(), small(1 << 10));
+  int asked = 0;
+  std::vector<std::pair<int, bool>> told;
+  RankReduce savesAtTheSecond{[](double v) { return v; }, [](double v) { return v; }};
+  savesAtTheSecond.agree = [&](double elapsed) { return ChunkAgreement{elapsed, false, ++asked == 2}; };
+  savesAtTheSecond.chunkDone = [&](const DirectPass& sofar, bool save) { told.emplace_back(sofar.spp, save); };
+  Film film(12, 10);
+  const DirectPass pass = renderDirectPass(renderer, 0, 1, film, savesAtTheSecond);
+  EXPECT_EQ(pass.spp, 1 << 10);
+  EXPECT_FALSE(pass.stopped);
+  ASSERT_GE(told.size(), 3u);
+  EXPECT_EQ(told[0], std::make_pair(4, false));
+  EXPECT_EQ(told[1], std::make_pair(4 + 16, true));
+  EXPECT_FALSE(told[2].second);
+  EXPECT_EQ(told.back().first, 1 << 10);
 }

@@ -1,0 +1,132 @@
+#include "direct_driver.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "core/error.h"
+#include "render/direct_pass.h"
+#include "render/schedule.h"
+
+namespace relt::mpi {
+namespace {
+
+// The rows of a film (every rank's, from a checkpoint) this rank renders; the others 0, so that
+// the ranks' films still sum to it and each goes on adding its rays in the order of a render that
+// never stopped.
+void keepOwnRows(const std::vector<double>& all, Film& film, int firstRow, int rowStride, const std::string& file) {
+  if (all.size() != film.data().size()) throw InputError(file, "", "the checkpoint's films do not match this render's");
+  const size_t row = size_t(3) * film.width();
+  for (int y = firstRow; y < film.height(); y += rowStride)
+    std::copy_n(all.begin() + ptrdiff_t(row * y), row, film.data().begin() + ptrdiff_t(row * y));
+}
+
+// The pass a checkpoint holds: its film rows (none kept for no pass) into `out`, where it got to
+// (spp, seconds, dropped).
+DirectPassStart restorePass(Resumed& resumed, const Session& session, DirectEstimate& out) {
+  const nlohmann::json& d = resumed.progress.at("direct");
+  if (d.at("spp").get<int>() > 0)
+    keepOwnRows(resumed.takeLastFilm(), out.film, session.rank(), session.size(), resumed.file);
+  out.inChains = d.at("in_chains").get<bool>();
+  out.dropped = d.at("dropped").get<uint64_t>();
+  return {d.at("spp").get<int>(), d.at("seconds").get<double>()};
+}
+
+nlohmann::json directProgress(int spp, double seconds, bool inChains, uint64_t dropped) {
+  return {{"spp", spp}, {"seconds", seconds}, {"in_chains", inChains}, {"dropped", dropped}};
+}
+
+// A checkpoint of the pass so far (no chain yet) and, on a save request, the image of it.
+struct PassSaver {
+  const Session& session;
+  const RenderSettings& settings;
+  const CheckpointPlan& plan;
+  const std::function<void(const Image&)>& snapshot;
+  DirectEstimate& out;
+  double lastCheckpoint;
+  double lastPrint = 0.0;
+  bool tty = ::isatty(STDERR_FILENO);
+
+  // The root's progress line, once a second: the share of the rays per pixel it will take (of a
+  // timed pass's share of the budget) done.
+  void print(const DirectPass& sofar) {
+    if (!session.isRoot() || sofar.seconds - lastPrint < 1.0) return;
+    lastPrint = sofar.seconds;
+    const int target = settings.directSpp > 0 ? settings.directSpp
+                       : settings.seconds     ? 0
+                                              : autoDirectSpp(settings.mutationsPerPixel.value_or(16.0));
+    const double fraction = target > 0 ? double(sofar.spp) / target
+                                       : std::min(1.0, sofar.seconds / (kDirectBudgetShare * settings.seconds.value_or(1.0)));
+    const double rays = double(sofar.spp) * settings.width * settings.height;
+    std::fprintf(stderr, tty ? "\rdirect emission  %s" : "direct emission  %s\n",
+                 progressLine(fraction, sofar.seconds, rays / std::max(sofar.seconds, 1e-9), "rays").c_str());
+  }
+
+  void chunkDone(const DirectPass& sofar, bool save) {
+    print(sofar);
+    if (save && !sofar.stopped) {  // a stopped render writes its image at the end
+      std::vector<double> sums = out.film.data();
+      reduceSumToRoot(sums);
+      if (session.isRoot()) snapshot(Renderer::resolve(out.film, sums, sofar.spp));
+    }
+    if (!checkpointNow(plan, sofar.seconds, lastCheckpoint, !sofar.stopped, save)) return;
+    CheckpointPlan p = plan;
+    p.directFilm = &out.film;
+    p.direct = directProgress(sofar.spp, sofar.seconds, false, out.dropped + allreduceSum(out.film.droppedSamples()));
+    saveCheckpoint(p, integratorName(settings.integrator), {{"phase", "direct"}}, {}, {});
+  }
+};
+
+}  // namespace
+
+nlohmann::json DirectEstimate::progress() const { return directProgress(spp, seconds, inChains, dropped); }
+
+DirectEstimate directEmission(const Session& session, Renderer& renderer, const RenderSettings& settings,
+                              const CheckpointPlan& plan, std::optional<Resumed>& resumed,
+                              const std::function<void(const Image&)>& snapshot) {
+  DirectEstimate out;
+  out.film = Film(settings.width, settings.height);
+  if (!directEmissionApart(settings)) return out;
+  DirectPassStart start;
+  // A checkpoint of an earlier release has no "direct": its pass is rendered again.
+  if (resumed && resumed->progress.contains("direct")) {
+    start = restorePass(*resumed, session, out);
+    if (resumed->progress.value("phase", "") == "direct") {
+      resumed.reset();  // the pass alone: it goes on, then the chains start afresh
+    } else {           // the chains': the pass is done
+      out.spp = start.spp;
+      out.seconds = start.seconds;
+      if (out.inChains) renderer.keepDirectEmissionInChains();
+      std::vector<double> sums = out.film.data();
+      reduceSumToRoot(sums);
+      if (session.isRoot() && out.spp > 0) out.image = Renderer::resolve(out.film, sums, out.spp);
+      return out;
+    }
+  }
+  PassSaver saver{session, settings, plan, snapshot, out, start.seconds};
+  RankReduce reduce{[](double v) { return allreduceMax(v); }, [](double v) { return allreduceSum(v); }};
+  reduce.agree = [](double elapsed) {
+    const Agreement a = agree(elapsed);
+    return ChunkAgreement{a.elapsed, a.stop, a.save};
+  };
+  reduce.chunkDone = [&](const DirectPass& sofar, bool save) { saver.chunkDone(sofar, save); };
+  const DirectPass pass = renderDirectPass(renderer, session.rank(), session.size(), out.film, reduce, start);
+  if (saver.lastPrint > 0.0 && saver.tty) std::fprintf(stderr, "\n");
+  std::vector<double> sums = out.film.data();
+  reduceSumToRoot(sums);
+  out.spp = pass.spp;
+  out.inChains = pass.spp == 0;
+  out.stopped = pass.stopped;
+  out.dropped += allreduceSum(out.film.droppedSamples());
+  out.seconds = pass.seconds;
+  if (session.isRoot() && pass.spp > 0) out.image = Renderer::resolve(out.film, sums, pass.spp);
+  // It is not cut short (a part of the image would lack it), so a large N can eat a short budget.
+  if (session.isRoot() && settings.seconds && out.seconds > 0.5 * *settings.seconds)
+    std::fprintf(stderr,
+                 "relt: warning: --direct-emission-spp %d took %.1f s of the %.1f s budget, leaving the chains %.1f s\n",
+                 pass.spp, out.seconds, *settings.seconds, std::max(0.0, *settings.seconds - out.seconds));
+  return out;
+}
+
+}  // namespace relt::mpi
