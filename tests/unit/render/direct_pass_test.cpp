@@ -28,6 +28,16 @@ RenderSettings small(int directSpp) {
 
 const RankReduce kOneRank{[](double v) { return v; }, [](double v) { return v; }};
 
+// One rank whose every max over ranks (the slowest rank's time) comes from `times`, in turn.
+RankReduce slowestRankTimes(std::deque<double>& times) {
+  return {[&times](double) {
+            const double t = times.front();
+            times.pop_front();
+            return t;
+          },
+          [](double v) { return v; }};
+}
+
 double filmSum(const Film& film) {
   double sum = 0.0;
   for (double v : film.data()) sum += v;
@@ -107,12 +117,7 @@ TEST(DirectPass, AutoWithATimeBudgetDoublesWhileTheSlowestRankStaysWithinTheShar
   RenderSettings s = small(kDirectSppAuto);
   s.seconds = 100.0;  // share: 6 s; the slowest rank's times at 16, 32 and 64 rays per pixel:
   std::deque<double> slowest = {1.0, 2.0, 4.0, 4.0};
-  const RankReduce scripted{[&](double) {
-                              const double t = slowest.front();
-                              slowest.pop_front();
-                              return t;
-                            },
-                            [](double v) { return v; }};
+  const RankReduce scripted = slowestRankTimes(slowest);
   Renderer renderer(withLightInView(), s);
   Film film(12, 10);
   const DirectPass pass = renderDirectPass(renderer, 0, 1, film, scripted);
@@ -209,12 +214,7 @@ TEST(DirectPass, AResumedTimedPassEndsTheDoublingItWasStoppedIn) {
   RenderSettings s = small(kDirectSppAuto);
   s.seconds = 100.0;  // share: 6 s
   std::deque<double> slowest = {2.0, 4.0, 4.0};
-  const RankReduce scripted{[&](double) {
-                              const double t = slowest.front();
-                              slowest.pop_front();
-                              return t;
-                            },
-                            [](double v) { return v; }};
+  const RankReduce scripted = slowestRankTimes(slowest);
   Renderer renderer(withLightInView(), s);
   Film film(12, 10);
   renderer.renderDirect(0, 1, film, 0, 20);
