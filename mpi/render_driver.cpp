@@ -329,69 +329,36 @@ void finishInThePass(const Session& session, const Renderer& renderer, const Ren
                g.renderSeconds, settings.output.c_str());
 }
 
-}  // namespace
-
-void runRender(const Session& session, RenderSettings settings, CheckpointPlan plan) {
-  const auto wallStart = Clock::now();
-  Renderer renderer(loadGltf(settings.scenePath), settings);
-  settings = renderer.settings();
-  if (session.isRoot())
-    for (const std::string& w : renderer.scene().warnings) std::fprintf(stderr, "relt: warning: %s\n", w.c_str());
-  checkOutputsWritable(session, settings);
-  checkCheckpointFolders(session, plan);
-  // Only the root reads and writes checkpoints; the digest reads the scene file again.
-  if (session.isRoot() && (!plan.dir.empty() || !plan.resume.empty())) {
-    plan.identity = imageIdentity(settings, sceneDigest(settings.scenePath, summarizeScene(renderer.scene())));
-    plan.settings = settings.toJson();
-  }
-  std::optional<Resumed> resumed;
-  if (!plan.resume.empty()) resumed = loadCheckpoint(plan, integratorName(settings.integrator));
-
-  if (settings.integrator == Integrator::Relt || isMarkovChain(settings.integrator)) {
-    const auto renderStart = Clock::now();
-    const DirectEstimate direct = directEmission(session, renderer, settings, plan, resumed, [&](const Image& image) {
-      writeImages(settings, image);
-    });
-    if (direct.stopped) {
-      finishInThePass(session, renderer, settings, wallStart, renderStart, direct);
-      return;
-    }
-    if (directEmissionApart(settings)) {
-      plan.direct = direct.progress();
-      if (direct.spp > 0) plan.directFilm = &direct.film;
-    }
-    const Resumed* chains = resumed ? &*resumed : nullptr;
-    if (settings.integrator == Integrator::Relt)
-      renderRelt(session, renderer, settings, wallStart, renderStart, direct, plan, chains);
-    else
-      renderChains(session, renderer, settings, wallStart, renderStart, direct, plan, chains);
-    return;
-  }
+// erpt: its image (with the proposal filter, if asked) and counters in stats.json.
+void renderErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, Clock::time_point wallStart,
+                const CheckpointPlan& plan, const Resumed* resumed) {
   Film film(settings.width, settings.height);
-  if (settings.integrator == Integrator::Erpt) {
-    const auto renderStart = Clock::now();
-    const ErptOutcome o = runErpt(session, renderer, settings, film, plan, resumed ? &*resumed : nullptr);
-    const Gathered g = gatherAfterRender(renderStart, renderer, film);
-    if (!session.isRoot()) return;
-    Image image = Renderer::resolve(film, film.data(), o.seedsPerPixel);
-    if (!o.proposals.empty()) applyProposalFilter(image, o.proposals);
-    nlohmann::json j = commonStats(settings, session, g, image);
-    addMutationRates(j, o.counters.mutations, g, session.size(),
-                     resumed ? resumed->progress.at("mutations").get<uint64_t>() : 0);
-    j["spp"] = o.seedsPerPixel;
-    j["seeds"] = o.counters.seeds;
-    j["chains"] = o.counters.chains;
-    j["acceptance"] = o.counters.mutations ? double(o.counters.accepted) / o.counters.mutations : 0.0;
-    j["invalid_proposals"] = o.counters.invalidProposals;
-    j["normaliser"] = o.normaliser;
-    if (resumed) j["resumed_from"] = {{"checkpoint", resumed->file}, {"progress", resumed->progress}};
-    writeOutputs(settings, image, j, wallStart);
-    std::fprintf(stderr, "relt: %llu seeds, %llu chains, %llu mutations, %.2f s; wrote %s\n",
-                 static_cast<unsigned long long>(o.counters.seeds), static_cast<unsigned long long>(o.counters.chains),
-                 static_cast<unsigned long long>(o.counters.mutations), g.renderSeconds, settings.output.c_str());
-    return;
-  }
-  // pt and bdpt: a checkpoint is the film and the passes done (pass k's samples depend on k only).
+  const auto renderStart = Clock::now();
+  const ErptOutcome o = runErpt(session, renderer, settings, film, plan, resumed);
+  const Gathered g = gatherAfterRender(renderStart, renderer, film);
+  if (!session.isRoot()) return;
+  Image image = Renderer::resolve(film, film.data(), o.seedsPerPixel);
+  if (!o.proposals.empty()) applyProposalFilter(image, o.proposals);
+  nlohmann::json j = commonStats(settings, session, g, image);
+  addMutationRates(j, o.counters.mutations, g, session.size(),
+                   resumed ? resumed->progress.at("mutations").get<uint64_t>() : 0);
+  j["spp"] = o.seedsPerPixel;
+  j["seeds"] = o.counters.seeds;
+  j["chains"] = o.counters.chains;
+  j["acceptance"] = o.counters.mutations ? double(o.counters.accepted) / o.counters.mutations : 0.0;
+  j["invalid_proposals"] = o.counters.invalidProposals;
+  j["normaliser"] = o.normaliser;
+  if (resumed) j["resumed_from"] = {{"checkpoint", resumed->file}, {"progress", resumed->progress}};
+  writeOutputs(settings, image, j, wallStart);
+  std::fprintf(stderr, "relt: %llu seeds, %llu chains, %llu mutations, %.2f s; wrote %s\n",
+               static_cast<unsigned long long>(o.counters.seeds), static_cast<unsigned long long>(o.counters.chains),
+               static_cast<unsigned long long>(o.counters.mutations), g.renderSeconds, settings.output.c_str());
+}
+
+// pt and bdpt: a checkpoint is the film and the passes done (pass k's samples depend on k only).
+void renderPasses(const Session& session, Renderer& renderer, const RenderSettings& settings,
+                  Clock::time_point wallStart, const CheckpointPlan& plan, const Resumed* resumed) {
+  Film film(settings.width, settings.height);
   PassStart start;
   uint64_t earlierSamples = 0;
   if (resumed) {
@@ -435,6 +402,51 @@ void runRender(const Session& session, RenderSettings settings, CheckpointPlan p
                g.renderSeconds, samplesNow / std::max(g.renderSeconds, 1e-9) * 1e-6,
                g.rays / std::max(g.renderSeconds, 1e-9) * 1e-6,
                settings.output.c_str(), settings.png.empty() ? "" : " and ", settings.png.c_str());
+}
+
+}  // namespace
+
+void runRender(const Session& session, RenderSettings settings, CheckpointPlan plan) {
+  const auto wallStart = Clock::now();
+  Renderer renderer(loadGltf(settings.scenePath), settings);
+  settings = renderer.settings();
+  if (session.isRoot())
+    for (const std::string& w : renderer.scene().warnings) std::fprintf(stderr, "relt: warning: %s\n", w.c_str());
+  checkOutputsWritable(session, settings);
+  checkCheckpointFolders(session, plan);
+  // Only the root reads and writes checkpoints; the digest reads the scene file again.
+  if (session.isRoot() && (!plan.dir.empty() || !plan.resume.empty())) {
+    plan.identity = imageIdentity(settings, sceneDigest(settings.scenePath, summarizeScene(renderer.scene())));
+    plan.settings = settings.toJson();
+  }
+  std::optional<Resumed> resumed;
+  if (!plan.resume.empty()) resumed = loadCheckpoint(plan, integratorName(settings.integrator));
+
+  if (settings.integrator == Integrator::Relt || isMarkovChain(settings.integrator)) {
+    const auto renderStart = Clock::now();
+    const DirectEstimate direct = directEmission(session, renderer, settings, plan, resumed, [&](const Image& image) {
+      writeImages(settings, image);
+    });
+    if (direct.stopped) {
+      finishInThePass(session, renderer, settings, wallStart, renderStart, direct);
+      return;
+    }
+    if (directEmissionApart(settings)) {
+      plan.direct = direct.progress();
+      if (direct.spp > 0) plan.directFilm = &direct.film;
+    }
+    const Resumed* chains = resumed ? &*resumed : nullptr;
+    if (settings.integrator == Integrator::Relt)
+      renderRelt(session, renderer, settings, wallStart, renderStart, direct, plan, chains);
+    else
+      renderChains(session, renderer, settings, wallStart, renderStart, direct, plan, chains);
+    return;
+  }
+  if (settings.integrator == Integrator::Erpt) {
+    renderErpt(session, renderer, settings, wallStart, plan, resumed ? &*resumed : nullptr);
+    return;
+  }
+  renderPasses(session, renderer, settings, wallStart, plan, resumed ? &*resumed : nullptr);
 }
 
 }  // namespace relt::mpi
