@@ -189,7 +189,7 @@ TEST(Checkpoint, AStopInTheDirectEmissionPassResumesToTheUninterruptedImage) {
     const std::string ck = dir + "/ck", out = dir + "/stopped.exr";
     const SignalledRun run = runAndSignal(mpirun(2) + reltBinary() + " render " + sourcePath("scenes/cornell-box.gltf") +
                                               " -o " + out + args + "--checkpoint " + ck + " --stats " + dir + "/stopped.json",
-                                          dir + "/log.txt", "TERM");
+                                          dir + "/log.txt", "TERM", "", kDirectPassProgress);
     ASSERT_NE(run.result.output.find("stopped in the direct-emission pass"), std::string::npos) << run.result.output;
     ASSERT_TRUE(fileExists(out));
     const int spp = nlohmann::json::parse(std::ifstream(dir + "/stopped.json"))["direct_emission_spp"].get<int>();

@@ -31,10 +31,10 @@ CommandResult runCommand(const std::string& command) {
 }
 
 SignalledRun runAndSignal(const std::string& command, const std::string& log, const std::string& signal,
-                          const std::string& victim) {
+                          const std::string& victim, const std::string& progress) {
   const std::string target = victim.empty() ? "$pid" : "$(pgrep -f -n '" + victim + "')";
   const std::string script = "(" + command + ") > " + log + " 2>&1 & pid=$!; " +
-                             "for i in $(seq 300); do grep -q elapsed " + log + " && break; sleep 0.05; done; " +
+                             "for i in $(seq 300); do grep -qE '" + progress + "' " + log + " && break; sleep 0.05; done; " +
                              "kill -" + signal + " " + target + "; t0=$(date +%s.%N); wait $pid; rc=$?; " +
                              "echo \"seconds $(echo \"$(date +%s.%N) - $t0\" | bc)\"; cat " + log + "; exit $rc";
   SignalledRun out;

@@ -18,15 +18,18 @@ struct CommandResult {
 // Runs a shell command, capturing its output and exit code.
 CommandResult runCommand(const std::string& command);
 // Runs `command` in the background (its output to `log`), waits for its first progress line
-// (at most 15 s), sends `signal` (e.g. "TERM") to the process whose command line matches the
-// pgrep pattern `victim` (empty: the command itself) and waits for the end. The result's output
-// is the log; `secondsAfterSignal` runs from the signal to the end.
+// matching the extended regular expression `progress` (at most 15 s; by default one of the chains
+// or passes, not of the direct-emission pass before them), sends `signal` (e.g. "TERM") to the
+// process whose command line matches the pgrep pattern `victim` (empty: the command itself) and
+// waits for the end. The result's output is the log; `secondsAfterSignal` runs from the signal.
 struct SignalledRun {
   CommandResult result;
   double secondsAfterSignal = 0.0;
 };
+constexpr const char* kRenderProgress = "^ *[0-9.]+%.* elapsed";
+constexpr const char* kDirectPassProgress = "^direct emission .* elapsed";
 SignalledRun runAndSignal(const std::string& command, const std::string& log, const std::string& signal,
-                          const std::string& victim = "");
+                          const std::string& victim = "", const std::string& progress = kRenderProgress);
 // mpirun with the options this machine needs (root, oversubscription, no slow transports).
 std::string mpirun(int ranks);
 
