@@ -33,6 +33,13 @@ DirectPassStart restorePass(Resumed& resumed, const Session& session, DirectEsti
   return {d.at("spp").get<int>(), d.at("seconds").get<double>()};
 }
 
+// The pass's image of `spp` rays per pixel on the root (empty elsewhere and for none; collective).
+Image reducedImage(const Session& session, const Film& film, int spp) {
+  std::vector<double> sums = film.data();
+  reduceSumToRoot(sums);
+  return session.isRoot() && spp > 0 ? Renderer::resolve(film, sums, spp) : Image();
+}
+
 nlohmann::json directProgress(int spp, double seconds, bool inChains, uint64_t dropped) {
   return {{"spp", spp}, {"seconds", seconds}, {"in_chains", inChains}, {"dropped", dropped}};
 }
@@ -66,9 +73,8 @@ struct PassSaver {
   void chunkDone(const DirectPass& sofar, bool save) {
     print(sofar);
     if (save && !sofar.stopped) {  // a stopped render writes its image at the end
-      std::vector<double> sums = out.film.data();
-      reduceSumToRoot(sums);
-      if (session.isRoot()) snapshot(Renderer::resolve(out.film, sums, sofar.spp));
+      const Image image = reducedImage(session, out.film, sofar.spp);
+      if (session.isRoot()) snapshot(image);
     }
     if (!checkpointNow(plan, sofar.seconds, lastCheckpoint, !sofar.stopped, save)) return;
     CheckpointPlan p = plan;
@@ -98,9 +104,7 @@ DirectEstimate directEmission(const Session& session, Renderer& renderer, const 
       out.spp = start.spp;
       out.seconds = start.seconds;
       if (out.inChains) renderer.keepDirectEmissionInChains();
-      std::vector<double> sums = out.film.data();
-      reduceSumToRoot(sums);
-      if (session.isRoot() && out.spp > 0) out.image = Renderer::resolve(out.film, sums, out.spp);
+      out.image = reducedImage(session, out.film, out.spp);
       return out;
     }
   }
@@ -113,14 +117,12 @@ DirectEstimate directEmission(const Session& session, Renderer& renderer, const 
   reduce.chunkDone = [&](const DirectPass& sofar, bool save) { saver.chunkDone(sofar, save); };
   const DirectPass pass = renderDirectPass(renderer, session.rank(), session.size(), out.film, reduce, start);
   if (saver.lastPrint > 0.0 && saver.tty) std::fprintf(stderr, "\n");
-  std::vector<double> sums = out.film.data();
-  reduceSumToRoot(sums);
+  out.image = reducedImage(session, out.film, pass.spp);
   out.spp = pass.spp;
   out.inChains = pass.spp == 0;
   out.stopped = pass.stopped;
   out.dropped += allreduceSum(out.film.droppedSamples());
   out.seconds = pass.seconds;
-  if (session.isRoot() && pass.spp > 0) out.image = Renderer::resolve(out.film, sums, pass.spp);
   // It is not cut short (a part of the image would lack it), so a large N can eat a short budget.
   if (session.isRoot() && settings.seconds && out.seconds > 0.5 * *settings.seconds)
     std::fprintf(stderr,
