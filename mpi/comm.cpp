@@ -177,7 +177,8 @@ std::vector<std::string> processorNames() {
 }  // namespace relt::mpi
 
 namespace relt::mpi {
-std::vector<std::vector<uint64_t>> transfer(const std::vector<Payload>& sends, const std::vector<int>& receiveFrom) {
+std::vector<std::vector<uint64_t>> transfer(const std::vector<Payload>& sends, const std::vector<int>& receiveFrom,
+                                            const std::function<void()>& idle) {
   constexpr int kTag = 7;
   std::vector<std::vector<uint64_t>> received(receiveFrom.size());
   timed([&] {
@@ -187,15 +188,27 @@ std::vector<std::vector<uint64_t>> transfer(const std::vector<Payload>& sends, c
                 MPI_COMM_WORLD, &requests[i]);
     for (size_t i = 0; i < receiveFrom.size(); ++i) {
       MPI_Status status;
-      MPI_Probe(receiveFrom[i], kTag, MPI_COMM_WORLD, &status);
+      if (!idle) MPI_Probe(receiveFrom[i], kTag, MPI_COMM_WORLD, &status);
+      for (int found = 0; idle && !found;) {
+        MPI_Iprobe(receiveFrom[i], kTag, MPI_COMM_WORLD, &found, &status);
+        if (!found) idle();
+      }
       int count = 0;
       MPI_Get_count(&status, MPI_UINT64_T, &count);
       received[i].resize(static_cast<size_t>(count));
       MPI_Recv(received[i].data(), count, MPI_UINT64_T, receiveFrom[i], kTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     }
-    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+    if (!idle) MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+    for (int done = 0; idle && !done;) {
+      MPI_Testall(static_cast<int>(requests.size()), requests.data(), &done, MPI_STATUSES_IGNORE);
+      if (!done) idle();
+    }
   });
   return received;
+}
+
+void waitTimed(MPI_Request& request) {
+  timed([&] { MPI_Wait(&request, MPI_STATUS_IGNORE); });
 }
 }  // namespace relt::mpi
 
@@ -224,8 +237,14 @@ void PendingAllgatherv::test() {
   if (request_ != MPI_REQUEST_NULL) MPI_Test(&request_, &done, MPI_STATUS_IGNORE);
 }
 
-std::vector<std::vector<double>> PendingAllgatherv::wait() {
-  timed([&] { MPI_Wait(&request_, MPI_STATUS_IGNORE); });
+std::vector<std::vector<double>> PendingAllgatherv::wait(const std::function<void()>& idle) {
+  timed([&] {
+    if (!idle) MPI_Wait(&request_, MPI_STATUS_IGNORE);
+    for (int done = 0; idle && !done;) {
+      MPI_Test(&request_, &done, MPI_STATUS_IGNORE);
+      if (!done) idle();
+    }
+  });
   std::vector<std::vector<double>> out(counts_.size());
   for (size_t r = 0; r < counts_.size(); ++r)
     out[r].assign(all_.begin() + offsets_[r], all_.begin() + offsets_[r] + counts_[r]);

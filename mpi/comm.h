@@ -3,6 +3,7 @@
 #include <mpi.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -63,7 +64,11 @@ struct Payload {
   int rank;
   std::vector<uint64_t> data;
 };
-std::vector<std::vector<uint64_t>> transfer(const std::vector<Payload>& sends, const std::vector<int>& receiveFrom);
+// While waiting, `idle` (if any) runs between tests (the request channel's poll).
+std::vector<std::vector<uint64_t>> transfer(const std::vector<Payload>& sends, const std::vector<int>& receiveFrom,
+                                            const std::function<void()>& idle = {});
+// Completes `request`, counted as collective time (and watched for stalls) like the collectives here.
+void waitTimed(MPI_Request& request);
 }  // namespace relt::mpi
 
 namespace relt::mpi {
@@ -76,8 +81,8 @@ class PendingAllgatherv {
   PendingAllgatherv(const PendingAllgatherv&) = delete;
   PendingAllgatherv& operator=(const PendingAllgatherv&) = delete;
   ~PendingAllgatherv();
-  // Every rank's buffer, in rank order.
-  std::vector<std::vector<double>> wait();
+  // Every rank's buffer, in rank order; `idle` (if any) runs between tests while waiting.
+  std::vector<std::vector<double>> wait(const std::function<void()>& idle = {});
   // Lets MPI advance the collective (Open MPI moves a nonblocking collective only inside MPI calls).
   void test();
 

@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "interrupt.h"
 #include "mcmc/round_schedule.h"
+#include "request_channel.h"
 #include "replica/round_loop.h"
 #include "replica/replica_schedule.h"
 #include "render/schedule.h"
@@ -59,16 +60,19 @@ ExchangeTally sumOverRanks(const ExchangeTally& mine) {
 }
 
 // The round loop's transport over MPI: one nonblocking allgatherv per group and round; chain
-// states point to point.
+// states point to point; with local decisions, stop and save requests on a channel of their own.
 class MpiTransport final : public RoundTransport {
  public:
-  explicit MpiTransport(int rank) : rank_(rank) {}
+  MpiTransport(int rank, bool localDecisions) : rank_(rank) {
+    if (localDecisions) channel_.emplace();
+    if (channel_) idle_ = [this] { channel_->poll(); };
+  }
   void post(int group, std::vector<double> mine, const std::vector<size_t>& lengths) override {
     if (pending_.size() <= size_t(group)) pending_.resize(size_t(group) + 1);
     pending_[size_t(group)].push_back(std::make_unique<PendingAllgatherv>(std::move(mine), lengths));
   }
   std::vector<std::vector<double>> wait(int group) override {
-    std::vector<std::vector<double>> out = pending_[size_t(group)].front()->wait();
+    std::vector<std::vector<double>> out = pending_[size_t(group)].front()->wait(idle_);
     pending_[size_t(group)].pop_front();
     return out;
   }
@@ -82,7 +86,7 @@ class MpiTransport final : public RoundTransport {
         chains.push_back(m.chain);
       }
     }
-    const std::vector<std::vector<uint64_t>> states = transfer(sends, from);
+    const std::vector<std::vector<uint64_t>> states = transfer(sends, from, idle_);
     for (size_t i = 0; i < states.size(); ++i) pool.importChain(chains[i], states[i]);
     pool.commitMoves();
   }
@@ -91,11 +95,24 @@ class MpiTransport final : public RoundTransport {
     // One test per group: each MPI call runs the progress engine for every pending request.
     for (const auto& group : pending_)
       if (!group.empty()) group.front()->test();
+    if (channel_) channel_->poll();
+  }
+  std::optional<RequestAgreement> requests(uint64_t rounds, bool stop, bool save) override {
+    return channel_ ? channel_->at(rounds, stop, save) : RoundTransport::requests(rounds, stop, save);
+  }
+  void endRequests() override {
+    if (channel_) channel_->close();
+  }
+  // Before a snapshot's or checkpoint's collectives (RequestChannel::barrier).
+  void meet() {
+    if (channel_) channel_->barrier();
   }
 
  private:
   int rank_;
   std::vector<std::deque<std::unique_ptr<PendingAllgatherv>>> pending_;  // per group, oldest first
+  std::optional<RequestChannel> channel_;
+  std::function<void()> idle_;  // empty without a channel: plain blocking waits
 };
 
 // The pool, films and schedule where the checkpoint left them; where the loop starts.
@@ -194,12 +211,15 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   const auto start = Clock::now();
   double lastSnapshot = resumed.elapsed, lastPrint = resumed.elapsed, lastCheckpoint = resumed.elapsed;
   const bool tty = ::isatty(STDERR_FILENO);
+  MpiTransport transport(session.rank(), pool.localDecisions());
   auto writeSnapshot = [&](uint64_t rounds, double elapsed) {
+    transport.meet();
     lastSnapshot = elapsed;
     const std::vector<double> sums = reducedSum(films);
     if (session.isRoot()) snapshot(sums, replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
   };
   auto writeCheckpoint = [&](uint64_t rounds, double elapsed) {
+    transport.meet();
     const nlohmann::json progress = {
         {"rounds", rounds}, {"elapsed", elapsed}, {"steps_per_chain", schedule.stepsAfter(rounds)}};
     saveCheckpoint(plan, "relt", progress, films, pool.checkpointPart());
@@ -228,7 +248,6 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
     writeSnapshot(rounds, elapsed);
     if (checkpointNow(plan, elapsed, lastCheckpoint, true, true)) writeCheckpoint(rounds, elapsed);
   };
-  MpiTransport transport(session.rank());
   const RoundLoopResult loop = runRoundLoop(pool, schedule, transport, films, hooks, resumed);
   if (loop.stopped) markStopAgreed();
   const double roundCollective = collectiveSeconds() - collectiveBefore;

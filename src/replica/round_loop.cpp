@@ -39,7 +39,9 @@ struct Stepper {
     sum += seconds;
     sumSquares += seconds * seconds;
     if (trace.size() < hooks.traceLimit) trace.push_back(seconds);
-    const bool stop = hooks.stop && hooks.stop(), save = hooks.save && hooks.save();
+    // With local decisions the requests travel apart from the messages (askApart).
+    const bool inMessages = !pool.localDecisions();
+    const bool stop = inMessages && hooks.stop && hooks.stop(), save = inMessages && hooks.save && hooks.save();
     transport.post(group, pool.roundMessage(group, hooks.elapsed(), seconds, stop, save), lengths[size_t(group)]);
   }
   // Completes a group's collective for round `round`: exchanges, normalisers, chain moves.
@@ -65,6 +67,16 @@ struct Stepper {
       measureLengths();
     }
     return agreed;
+  }
+  // Local decisions: this rank's requests to the transport after group 0's round; what the ranks
+  // agreed to do here is remembered as a request in the messages would be.
+  void askApart(uint64_t rounds) {
+    if (!pool.localDecisions()) return;
+    const bool stop = hooks.stop && hooks.stop(), save = hooks.save && hooks.save();
+    if (const std::optional<RequestAgreement> agreed = transport.requests(rounds, stop, save)) {
+      stopRequested |= agreed->stop;
+      saveRequested |= agreed->save;
+    }
   }
 };
 
@@ -125,6 +137,7 @@ RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule,
       if (g == 0) {
         ++out.rounds;
         out.elapsed = clock.update(agreed, pool.roundsReadBack(0), pool.unread(0));
+        s.askApart(out.rounds);
         out.stopped = s.stopRequested;
         const bool more = !s.stopRequested && schedule.anotherRound(out.rounds, out.elapsed, clock.pace.typical());
         if (hooks.roundDone) hooks.roundDone(out.rounds, out.elapsed, more);
@@ -135,6 +148,7 @@ RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule,
           // Rounds whose messages were still travelling: every rank takes part, nobody reads them.
           for (int h = 0; h < groups; ++h)
             for (size_t i = pool.inFlight(h); i > 0; --i) transport.wait(h);
+          if (pool.localDecisions()) transport.endRequests();
           out.stepMean = s.sum / s.steppings;
           out.finishMean = s.finishSum / s.finishes;
           out.stepDeviation = std::sqrt(std::max(0.0, s.sumSquares / s.steppings - out.stepMean * out.stepMean));
@@ -146,6 +160,16 @@ RoundLoopResult runRoundLoop(ReplicaPool& pool, const ReplicaSchedule& schedule,
     }
     first = 0;
   }
+}
+
+RequestAgreement agreeOnOffers(const std::vector<RequestOffer>& offers) {
+  RequestAgreement agreed;
+  for (const RequestOffer& o : offers) {
+    agreed.round = std::max(agreed.round, o.round);
+    agreed.stop |= o.stop;
+    agreed.save |= o.save;
+  }
+  return agreed;
 }
 
 void LocalTransport::post(int group, std::vector<double> mine, const std::vector<size_t>&) {

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "film/film.h"
@@ -17,6 +18,21 @@
 #include "replica/replica_schedule.h"
 
 namespace relt {
+
+// A stop or save request the ranks agreed on apart from the round messages: the loop acts on it
+// after round `round` - 1 (when group 0 has finished it), on every rank.
+struct RequestAgreement {
+  uint64_t round = 0;
+  bool stop = false, save = false;
+};
+
+// A rank's offer: the next round it reaches (where it can still act) and its requests. All act at
+// the largest offered round, on every rank's requests together.
+struct RequestOffer {
+  uint64_t round = 0;
+  bool stop = false, save = false;
+};
+RequestAgreement agreeOnOffers(const std::vector<RequestOffer>& offers);
 
 // How a rank's pool meets the others: the MPI layer's collectives, or one process playing all.
 class RoundTransport {
@@ -32,6 +48,17 @@ class RoundTransport {
   // Called between chains while stepping: nonblocking collectives advance only inside MPI calls,
   // so without it a posted collective would wait for the next wait().
   virtual void progress() {}
+  // Local decisions only: their messages are read back lag rounds late, too late for a stop that
+  // must beat mpirun's kill, so requests travel apart. Called on every rank after every round
+  // (group 0 has finished round `rounds` - 1) with this rank's requests since the last call;
+  // returns the agreement the ranks act on here, if any. One process acts at once.
+  virtual std::optional<RequestAgreement> requests(uint64_t rounds, bool stop, bool save) {
+    if (!stop && !save) return std::nullopt;
+    return RequestAgreement{rounds, stop, save};
+  }
+  // Local decisions only: the loop's end, on every rank after the same round (an agreement under
+  // way is completed and dropped).
+  virtual void endRequests() {}
 };
 
 struct RoundLoopHooks {

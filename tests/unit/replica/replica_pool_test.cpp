@@ -231,19 +231,20 @@ TEST(RoundLoop, AStopRequestEndsTheLoopAfterTheCurrentRound) {
     int posts = 0;
     RoundLoopHooks hooks;
     hooks.elapsed = [] { return 0.0; };
-    hooks.stop = [&] { return posts++ >= askAt; };
+    hooks.stop = [&] { return posts++ >= askAt; };  // spread: asked at every post
     const RoundLoopResult r = runRoundLoop(pool, schedule, transport, films, hooks);
     if (askAt == 1000) {
       EXPECT_FALSE(r.stopped);
       EXPECT_EQ(r.rounds, 205u);  // 820 steps / 4 per round
     } else {
       EXPECT_TRUE(r.stopped);
-      // Post p is group p % 2's message of round p / 2 and carries the stop. Spread reads it at
-      // the end of that group's round, local decisions when it is read back, at the end of round
-      // p / 2 + lag - 1. Group 0's round is then the last; group 1's message is read after group 0
-      // stepped one more round.
-      const int delay = placement == Placement::Spread ? 1 : fx.settings.normaliserLag;
-      EXPECT_EQ(r.rounds, uint64_t(askAt / 2 + delay + askAt % 2)) << askAt << " " << placementName(placement);
+      // Spread: post p is group p % 2's message of round p / 2 and carries the stop, read at the
+      // end of that group's round. Group 0's round is then the last; group 1's message is read
+      // after group 0 stepped one more round. Local decisions read their messages back lag rounds
+      // late (here 32), so the request travels apart (RoundTransport::requests): asked once a
+      // round, after group 0's, and acted on there, not a lag later.
+      const uint64_t expected = placement == Placement::Spread ? uint64_t(askAt / 2 + 1 + askAt % 2) : uint64_t(askAt + 1);
+      EXPECT_EQ(r.rounds, expected) << askAt << " " << placementName(placement);
     }
     EXPECT_GT(sum(films), 0.0);
   }
@@ -602,4 +603,14 @@ TEST(ReplicaPool, AfterTheRegularisationMovesTheNormalisersReadEveryRoundUntilAB
     EXPECT_GT(pool.regularisationMoves(), 5u);
     EXPECT_GT(few, 10) << "rounds with fewer samples than the bootstrap after a move";
   }
+}
+
+TEST(RoundLoop, RanksActOnEveryRequestAtTheLargestOfferedRound) {
+  const RequestAgreement a = agreeOnOffers({{12, false, true}, {40, false, false}, {13, true, false}});
+  EXPECT_EQ(a.round, 40u);  // the rank 27 rounds ahead cannot go back: the others catch up
+  EXPECT_TRUE(a.stop);
+  EXPECT_TRUE(a.save);
+  const RequestAgreement none = agreeOnOffers({{7, false, false}, {7, false, false}});
+  EXPECT_EQ(none.round, 7u);
+  EXPECT_FALSE(none.stop || none.save);
 }
