@@ -50,13 +50,26 @@ PassStart restore(const Session& session, const Resumed& resumed, Film& film, Er
   } catch (const std::runtime_error& e) {
     throw InputError(resumed.file, "", e.what());
   }
-  return {resumed.progress.at("passes").get<int>(), resumed.progress.at("elapsed").get<double>()};
+  return passStartOf(resumed.progress);
+}
+
+// The image so far on the root (empty elsewhere; collective): the film's rows by their seeds per
+// pixel, the proposal filter applied if asked.
+Image imageSoFar(const Session& session, const Film& film, const std::vector<double>& proposals, PassPoint at) {
+  std::vector<double> sums = film.data(), tally = proposals;
+  reduceSumToRoot(sums);
+  if (!tally.empty()) reduceSumToRoot(tally);
+  if (!session.isRoot()) return {};
+  Image image = Renderer::resolve(film, sums, at.passes, at.rows);
+  if (!tally.empty()) applyProposalFilter(image, tally);
+  return image;
 }
 
 }  // namespace
 
 ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
-                    const CheckpointPlan& plan, const Resumed* resumed) {
+                    const std::function<void(const Image&)>& snapshot, const CheckpointPlan& plan,
+                    const Resumed* resumed) {
   ErptSettings es;
   es.chainLength = settings.chainLength;
   es.sizes = KelemenSizes{settings.smallStepMin, settings.smallStepMax};
@@ -74,17 +87,23 @@ ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSett
     out.normaliser = allreduceSum(erptBootstrapSum(eval, settings.seed, bootstrap, session.rank(), session.size())) /
                      bootstrap;
   // Passes of one seed per pixel, distributed and timed as pt's.
-  const int passes = runPasses(
-      session, settings,
-      [&](uint64_t pass, int row) { local.add(erptRow(eval, es, out.normaliser, settings.seed, pass, row, 1.0, film, tally)); },
-      {}, {}, start,
-      [&, lastCheckpoint = start.elapsed](int done, double elapsed, bool more, bool save) mutable {
-        if (!checkpointNow(plan, elapsed, lastCheckpoint, more, save)) return;
-        const ErptCounters sums = sumOverRanks(local);
-        const nlohmann::json progress = {{"passes", done}, {"elapsed", elapsed}, {"mutations", sums.mutations}};
-        saveCheckpoint(plan, "erpt", progress, {&film, 1}, checkpointPart(session, out, sums));
-      });
-  out.seedsPerPixel = passes;
+  PassHooks hooks;
+  hooks.renderUnit = [&](uint64_t pass, int row) {
+    local.add(erptRow(eval, es, out.normaliser, settings.seed, pass, row, 1.0, film, tally));
+  };
+  if (snapshot)
+    hooks.snapshot = [&](PassPoint at) {
+      const Image image = imageSoFar(session, film, out.proposals, at);
+      if (session.isRoot()) snapshot(image);
+    };
+  hooks.chunkDone = [&, lastCheckpoint = start.elapsed](PassPoint at, double elapsed, bool more, bool save) mutable {
+    if (!checkpointNow(plan, elapsed, lastCheckpoint, more, save)) return;
+    const ErptCounters sums = sumOverRanks(local);
+    nlohmann::json progress = passProgress(at, elapsed);
+    progress["mutations"] = sums.mutations;
+    saveCheckpoint(plan, "erpt", progress, {&film, 1}, checkpointPart(session, out, sums));
+  };
+  out.end = runPasses(session, settings, hooks, start);
   if (tally) reduceSumToRoot(out.proposals);
   out.counters = sumOverRanks(local);
   return out;

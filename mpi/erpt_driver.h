@@ -1,24 +1,29 @@
 #pragma once
 // The distributed part of erpt: bootstrap shares, then seeds by work unit (sample index, row).
+#include <functional>
+
 #include "checkpoint_io.h"
 #include "comm.h"
 #include "film/film.h"
 #include "mcmc/erpt.h"
+#include "pass_loop.h"
 #include "render/renderer.h"
 
 namespace relt::mpi {
 
 struct ErptOutcome {
   double normaliser = 0.0;  // mean energy of the bootstrap samples
-  int seedsPerPixel = 0;
+  PassPoint end;             // seeds per pixel: end.passes, one more in rows 0 .. end.rows - 1
   ErptCounters counters;    // summed over ranks
   std::vector<double> proposals;  // --erpt-proposal-filter: proposed mutations per pixel, on the root
 };
 
-// Renders this rank's share into `film` (not yet reduced); collective. `plan` writes checkpoints
-// (film, passes, counters, normaliser, proposal tally); a render resumed from `resumed` (or null)
-// continues after its passes without running the bootstrap again.
+// Renders this rank's share into `film` (not yet reduced); collective. The root's `snapshot` (if
+// any) gets the image so far on a save request and every --snapshot-every seconds. `plan` writes
+// checkpoints (film, passes, counters, normaliser, proposal tally); a render resumed from
+// `resumed` (or null) continues where it stopped without running the bootstrap again.
 ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
-                    const CheckpointPlan& plan = {}, const Resumed* resumed = nullptr);
+                    const std::function<void(const Image&)>& snapshot = {}, const CheckpointPlan& plan = {},
+                    const Resumed* resumed = nullptr);
 
 }  // namespace relt::mpi

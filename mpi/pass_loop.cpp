@@ -8,55 +8,89 @@
 
 #include "mcmc/round_schedule.h"
 #include "render/pace.h"
-#include "render/schedule.h"
 
 namespace relt::mpi {
+namespace {
 
-int runPasses(const Session& session, const RenderSettings& settings,
-              const std::function<void(uint64_t pass, int row)>& renderUnit,
-              const std::function<double(double elapsed)>& rate,
-              const std::function<void(int passes)>& snapshot, const PassStart& start,
-              const std::function<void(int passes, double elapsed, bool more, bool save)>& passDone) {
+// The root's progress line: passes done (and the share of the current one) of the budget.
+struct ProgressPrinter {
+  const Session& session;
+  const RenderSettings& settings;
+  const std::function<double(double)>& rate;
+  double lastPrint;
+  bool tty = ::isatty(STDERR_FILENO);
+  bool printed = false;
+
+  void print(PassPoint at, double elapsed) {
+    if (!rate || !session.isRoot() || elapsed - lastPrint < 1.0) return;
+    lastPrint = elapsed;
+    printed = true;
+    const double passes = at.passes + double(at.rows) / std::max(settings.height, 1);
+    const double fraction = settings.seconds ? std::min(1.0, elapsed / *settings.seconds)
+                                             : passes / settings.spp.value_or(16);
+    std::fprintf(stderr, tty ? "\r%s" : "%s\n", progressLine(fraction, elapsed, rate(elapsed)).c_str());
+  }
+  ~ProgressPrinter() {
+    if (printed && tty) std::fprintf(stderr, "\n");
+  }
+};
+
+}  // namespace
+
+nlohmann::json passProgress(PassPoint at, double elapsed) {
+  return {{"passes", at.passes}, {"rows", at.rows}, {"elapsed", elapsed}};
+}
+
+PassStart passStartOf(const nlohmann::json& progress) {
+  return {{progress.at("passes").get<int>(), progress.value("rows", 0)}, progress.at("elapsed").get<double>()};
+}
+
+PassPoint runPasses(const Session& session, const RenderSettings& settings, const PassHooks& hooks,
+                    const PassStart& start) {
   using Clock = std::chrono::steady_clock;
   const auto clockStart = Clock::now();
   auto since = [&] { return start.elapsed + std::chrono::duration<double>(Clock::now() - clockStart).count(); };
   const int height = settings.height;
   const bool timed = settings.seconds.has_value();
   const int spp = settings.spp.value_or(timed ? 0 : 16);
-  const bool tty = ::isatty(STDERR_FILENO);
-  const bool snapshots = snapshot && settings.snapshotEvery > 0.0;
+  const bool snapshots = hooks.snapshot && settings.snapshotEvery > 0.0;
   Pace pace;  // the passes' agreed durations: one that spanned a stall does not end the render early
-  double lastElapsed = start.elapsed, lastPrint = start.elapsed, lastSnapshot = start.elapsed;
-  int passes = start.passes;
-  auto another = [&] { return timed ? startAnotherPass(passes, lastElapsed, pace.typical(), *settings.seconds) : passes < spp; };
-  if (!another()) return passes;
+  double passStart = start.elapsed, chunkStart = start.elapsed, lastSnapshot = start.elapsed;
+  PassPoint at = start.at;
+  auto another = [&] {
+    return timed ? startAnotherPass(at.passes, passStart, pace.typical(), *settings.seconds) : at.passes < spp;
+  };
+  // A pass begun (and checkpointed inside) is finished whatever the budget: it was started within it.
+  if (at.rows == 0 && !another()) return at;
+  ProgressPrinter printer{session, settings, hooks.rate, start.elapsed};
+  int chunk = kFirstPassChunkRows;
   for (;;) {
-    for (int row = 0; row < height; ++row)
-      if (ownsUnit(static_cast<uint64_t>(passes), row, height, session.rank(), session.size()))
-        renderUnit(static_cast<uint64_t>(passes), row);
-    ++passes;
-    // The ranks agree on the elapsed time and on a stop signal every pass, so all stop and write
-    // snapshots and checkpoints after the same passes.
+    const int first = at.rows, end = std::min(height, first + chunk);
+    for (int row = first; row < end; ++row)
+      if (ownsUnit(uint64_t(at.passes), row, height, session.rank(), session.size()))
+        hooks.renderUnit(uint64_t(at.passes), row);
+    at.rows = end;
+    const bool passEnd = end == height;
+    if (passEnd) at = {at.passes + 1, 0};
+    // The ranks agree after every chunk, so all stop, snapshot and checkpoint at the same point.
     const Agreement agreed = agree(since());
     const double elapsed = agreed.elapsed;
-    pace.add(elapsed - lastElapsed);
-    lastElapsed = elapsed;
-    const bool more = !agreed.stop && another();
-    const bool save = agreed.save && more;  // the last pass is written anyway
-    if (snapshot && (save || (snapshots && snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more)))) {
+    chunk = nextPassChunk(end - first, elapsed - chunkStart, height);
+    chunkStart = elapsed;
+    if (passEnd) {
+      pace.add(elapsed - passStart);
+      passStart = elapsed;
+    }
+    const bool more = !agreed.stop && (!passEnd || another());
+    const bool save = agreed.save && more;  // the last chunk is written anyway
+    if (hooks.snapshot && (save || (snapshots && snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more)))) {
       lastSnapshot = elapsed;
-      snapshot(passes);
+      hooks.snapshot(at);
     }
-    if (rate && session.isRoot() && (elapsed - lastPrint >= 1.0)) {
-      lastPrint = elapsed;
-      const double fraction = timed ? std::min(1.0, elapsed / *settings.seconds) : double(passes) / spp;
-      std::fprintf(stderr, tty ? "\r%s" : "%s\n", progressLine(fraction, elapsed, rate(elapsed)).c_str());
-    }
-    if (passDone) passDone(passes, elapsed, more, save);
-    if (!more) break;
+    printer.print(at, elapsed);
+    if (hooks.chunkDone) hooks.chunkDone(at, elapsed, more, save);
+    if (!more) return at;
   }
-  if (rate && session.isRoot() && tty) std::fprintf(stderr, "\n");
-  return passes;
 }
 
 }  // namespace relt::mpi

@@ -1,30 +1,46 @@
 #pragma once
 // The pass loop of the per-pixel integrators (pt, bdpt, erpt): pass k renders the work units
 // (k, row) this rank owns; --spp N runs N passes, --time decides collectively after each pass.
+// A pass is taken in chunks of rows (render/schedule.h, nextPassChunk), the ranks agreeing on the
+// elapsed time and on stop and save requests after each, so a request waits about 0.1 s however
+// long a pass takes; a render stopped inside a pass keeps the rows it did.
 #include <functional>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "comm.h"
+#include "render/schedule.h"
 #include "render/settings.h"
 
 namespace relt::mpi {
 
-// Calls renderUnit(pass, row) for every owned unit of every pass and returns the number of passes.
-// If rate is given, the root prints a progress line at most once a second with rate(elapsed)
-// samples per second. If snapshot is given and --snapshot-every is set, every rank calls
-// snapshot(passes so far) after the same passes (the elapsed time is agreed every pass).
-// A render resumed from a checkpoint starts after `start.passes` passes and `start.elapsed`
-// seconds; passDone(passes, elapsed, more, save), if given, runs on every rank after every pass
-// (the last one with more = false: the budget is spent or a rank was signalled to stop; save: a
-// rank was asked to save, see interrupt.h, and the snapshot was written: checkpoint now).
+// A render resumed from a checkpoint starts at `at` (a pass, possibly inside it) after `elapsed`.
 struct PassStart {
-  int passes = 0;
+  PassPoint at;
   double elapsed = 0.0;
 };
-int runPasses(const Session& session, const RenderSettings& settings,
-              const std::function<void(uint64_t pass, int row)>& renderUnit,
-              const std::function<double(double elapsed)>& rate = {},
-              const std::function<void(int passes)>& snapshot = {}, const PassStart& start = {},
-              const std::function<void(int passes, double elapsed, bool more, bool save)>& passDone = {});
+
+// A checkpoint's progress of passes, and where a render resumed from it starts (a checkpoint of
+// an earlier release, taken between passes only, has no "rows").
+nlohmann::json passProgress(PassPoint at, double elapsed);
+PassStart passStartOf(const nlohmann::json& progress);
+
+struct PassHooks {
+  std::function<void(uint64_t pass, int row)> renderUnit;  // every owned unit of every pass
+  // Optional: the root prints a progress line at most once a second with rate(elapsed) samples/s.
+  std::function<double(double elapsed)> rate = {};
+  // Optional: on every rank after the same chunks, the image so far (on a save request, and every
+  // --snapshot-every seconds).
+  std::function<void(PassPoint)> snapshot = {};
+  // Optional: on every rank after every chunk (the last one with more = false: the budget is spent
+  // or a rank was signalled to stop; save: a rank was asked to save and the snapshot was written:
+  // checkpoint now).
+  std::function<void(PassPoint, double elapsed, bool more, bool save)> chunkDone = {};
+};
+
+// Runs the passes and returns where they ended: whole passes, or inside one if a rank was stopped.
+PassPoint runPasses(const Session& session, const RenderSettings& settings, const PassHooks& hooks,
+                    const PassStart& start = {});
 
 }  // namespace relt::mpi

@@ -334,15 +334,21 @@ void renderErpt(const Session& session, Renderer& renderer, const RenderSettings
                 const CheckpointPlan& plan, const Resumed* resumed) {
   Film film(settings.width, settings.height);
   const auto renderStart = Clock::now();
-  const ErptOutcome o = runErpt(session, renderer, settings, film, plan, resumed);
+  int snapshots = 0;
+  const ErptOutcome o = runErpt(session, renderer, settings, film, [&](const Image& image) {
+    writeImages(settings, image);
+    ++snapshots;
+  }, plan, resumed);
   const Gathered g = gatherAfterRender(renderStart, renderer, film);
   if (!session.isRoot()) return;
-  Image image = Renderer::resolve(film, film.data(), o.seedsPerPixel);
+  Image image = Renderer::resolve(film, film.data(), o.end.passes, o.end.rows);
   if (!o.proposals.empty()) applyProposalFilter(image, o.proposals);
   nlohmann::json j = commonStats(settings, session, g, image);
   addMutationRates(j, o.counters.mutations, g, session.size(),
                    resumed ? resumed->progress.at("mutations").get<uint64_t>() : 0);
-  j["spp"] = o.seedsPerPixel;
+  j["spp"] = o.end.passes;
+  if (o.end.rows > 0) j["rows_of_the_stopped_pass"] = o.end.rows;
+  j["snapshots"] = snapshots;
   j["seeds"] = o.counters.seeds;
   j["chains"] = o.counters.chains;
   j["acceptance"] = o.counters.mutations ? double(o.counters.accepted) / o.counters.mutations : 0.0;
@@ -355,7 +361,7 @@ void renderErpt(const Session& session, Renderer& renderer, const RenderSettings
                static_cast<unsigned long long>(o.counters.mutations), g.renderSeconds, settings.output.c_str());
 }
 
-// pt and bdpt: a checkpoint is the film and the passes done (pass k's samples depend on k only).
+// pt and bdpt: a checkpoint is the film and where the passes got to (pass k's samples depend on k only).
 void renderPasses(const Session& session, Renderer& renderer, const RenderSettings& settings,
                   Clock::time_point wallStart, const CheckpointPlan& plan, const Resumed* resumed) {
   Film film(settings.width, settings.height);
@@ -363,35 +369,36 @@ void renderPasses(const Session& session, Renderer& renderer, const RenderSettin
   uint64_t earlierSamples = 0;
   if (resumed) {
     resumed->restoreFilms({&film, 1});
-    start.passes = resumed->progress.at("passes").get<int>();
-    start.elapsed = resumed->progress.at("elapsed").get<double>();
+    start = passStartOf(resumed->progress);
     earlierSamples = resumed->progress.at("samples").get<uint64_t>();
   }
   const auto renderStart = Clock::now();
   int snapshots = 0;
-  const int passes = runPasses(
-      session, settings, [&](uint64_t pass, int row) { renderer.renderRow(pass, row, film); },
-      [&](double elapsed) { return double(renderer.samples()) * session.size() / std::max(elapsed, 1e-9); },
-      [&](int done) {
-        std::vector<double> sums = film.data();
-        reduceSumToRoot(sums);
-        if (session.isRoot()) writeImages(settings, Renderer::resolve(film, sums, done));
-        ++snapshots;
-      },
-      start,
-      [&, lastCheckpoint = start.elapsed](int done, double elapsed, bool more, bool save) mutable {
-        if (!checkpointNow(plan, elapsed, lastCheckpoint, more, save)) return;
-        const nlohmann::json progress = {
-            {"passes", done}, {"elapsed", elapsed}, {"samples", earlierSamples + allreduceSum(renderer.samples())}};
-        saveCheckpoint(plan, integratorName(settings.integrator), progress, {&film, 1}, {});
-      });
+  PassHooks hooks;
+  hooks.renderUnit = [&](uint64_t pass, int row) { renderer.renderRow(pass, row, film); };
+  hooks.rate = [&](double elapsed) { return double(renderer.samples()) * session.size() / std::max(elapsed, 1e-9); };
+  hooks.snapshot = [&](PassPoint at) {
+    std::vector<double> sums = film.data();
+    reduceSumToRoot(sums);
+    if (session.isRoot()) writeImages(settings, Renderer::resolve(film, sums, at.passes, at.rows));
+    ++snapshots;
+  };
+  hooks.chunkDone = [&, lastCheckpoint = start.elapsed](PassPoint at, double elapsed, bool more, bool save) mutable {
+    if (!checkpointNow(plan, elapsed, lastCheckpoint, more, save)) return;
+    nlohmann::json progress = passProgress(at, elapsed);
+    progress["samples"] = earlierSamples + allreduceSum(renderer.samples());
+    saveCheckpoint(plan, integratorName(settings.integrator), progress, {&film, 1}, {});
+  };
+  const PassPoint end = runPasses(session, settings, hooks, start);
+  const int passes = end.passes;
   const uint64_t samplesNow = allreduceSum(renderer.samples()), samples = earlierSamples + samplesNow;
   const Gathered g = gatherAfterRender(renderStart, renderer, film);
   if (!session.isRoot()) return;
 
-  const Image image = Renderer::resolve(film, film.data(), passes);
+  const Image image = Renderer::resolve(film, film.data(), end.passes, end.rows);
   nlohmann::json j = commonStats(settings, session, g, image);
   j["spp"] = passes;
+  if (end.rows > 0) j["rows_of_the_stopped_pass"] = end.rows;
   j["snapshots"] = snapshots;
   j["samples"] = samples;
   j["samples_per_second"] = samplesNow / std::max(g.renderSeconds, 1e-9);

@@ -7,8 +7,9 @@
 #    checkpoint first exist, and until the final stats.json (mpirun kills the ranks 2 s after).
 # The moments come from a calibration render (its setup time and rounds per second). The
 # direct-emission pass takes a fixed 64 rays per pixel here, so that the moments fall in the
-# chains' rounds (on auto, a 600 s budget gives it up to 36 s); a last row stops a default render
-# 2 s into its direct-emission pass.
+# chains' rounds (on auto, a 600 s budget gives it up to 36 s). Further rows: the stops again with
+# packed placement, a default render stopped 2 s into its direct-emission pass, and bdpt at
+# 1024x1024 stopped inside a pass.
 # Usage: scripts/bench/stall_stop.sh [PAUSE] [ROUNDS...]   (defaults 0.3; 100 1000 10000)
 # Writes out/bench/stall_stop.md.
 set -euo pipefail
@@ -84,12 +85,26 @@ rounds = json.load(open(stop + "/stats.json"))["relt"]["rounds"]
 print("| %s | %.1f | %.2f | %+.1f %% | %d | %s | %s | %s |" % (n, budget, seconds, 100 * (seconds / budget - 1), rounds, image, ck, final))
 PY
 done
-# A default render (direct-emission pass on auto) stopped 2 s into that pass: no chain has run yet.
-stop_after "$OUT/stop-direct" 2 "${RENDER[@]:0:${#RENDER[@]}-2}"
-/usr/bin/python3 - "$OUT/stop-direct" >> "$TABLE" <<'PY'
+# stop_row DIR LABEL: a table row of a stop alone (rounds, or passes and rows of a pass stopped inside).
+stop_row() {
+  /usr/bin/python3 - "$1" "$2" >> "$TABLE" <<'PY'
 import json, sys
 image, ck, final = open(sys.argv[1] + "/seen.txt").read().split()
-rounds = json.load(open(sys.argv[1] + "/stats.json"))["relt"]["rounds"]
-print("| in the direct pass (auto) | | | | %d | %s | %s | %s |" % (rounds, image, ck, final))
+j = json.load(open(sys.argv[1] + "/stats.json"))
+done = str(j["relt"]["rounds"]) if "relt" in j else "%d passes + %d rows" % (j["spp"], j.get("rows_of_the_stopped_pass", 0))
+print("| %s | | | | %s | %s | %s | %s |" % (sys.argv[2], done, image, ck, final))
 PY
+}
+# Packed placement (local decisions), whose messages come back up to 256 rounds late.
+for n in "${ROUNDS[@]}"; do
+  at=$(/usr/bin/python3 -c "print(round($SETUP + $n / $RATE, 2))")
+  stop_after "$OUT/stop-packed-$n" "$at" "${RENDER[@]}" --placement packed
+  stop_row "$OUT/stop-packed-$n" "$n, packed"
+done
+# A default render (direct-emission pass on auto) stopped 2 s into that pass: no chain has run yet.
+stop_after "$OUT/stop-direct" 2 "${RENDER[@]:0:${#RENDER[@]}-2}"
+stop_row "$OUT/stop-direct" "in the direct pass (auto)"
+# bdpt at 1024x1024 (about a second a pass on 2 ranks) stopped 5 s in: inside a pass.
+stop_after "$OUT/stop-bdpt" 5 "$BUILD_DIR/relt" render "$ROOT/scenes/glass-cube.gltf" --integrator bdpt --width 1024 --height 1024
+stop_row "$OUT/stop-bdpt" "bdpt 1024x1024, 5 s in"
 cat "$TABLE"

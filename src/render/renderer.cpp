@@ -1,5 +1,7 @@
 #include "render/renderer.h"
 
+#include <algorithm>
+
 #include "core/error.h"
 #include "core/low_discrepancy.h"
 #include "core/memory.h"
@@ -101,6 +103,14 @@ Image Renderer::resolve(const Film& film, const std::vector<double>& sums, doubl
   Image image(film.width(), film.height());
   const double scale = spp > 0.0 ? 1.0 / spp : 0.0;
   for (size_t i = 0; i < sums.size(); ++i) image.rgb[i] = static_cast<float>(sums[i] * scale);
+  return image;
+}
+
+Image Renderer::resolve(const Film& film, const std::vector<double>& sums, int passes, int rowsAhead) {
+  Image image = resolve(film, sums, double(passes));
+  const size_t row = size_t(3) * film.width();
+  for (size_t i = 0; i < row * size_t(std::clamp(rowsAhead, 0, film.height())); ++i)
+    image.rgb[i] = static_cast<float>(sums[i] / double(passes + 1));
   return image;
 }
 

@@ -44,6 +44,8 @@ class Renderer {
 
   // Film sums -> pixel values for `spp` samples per pixel.
   static Image resolve(const Film& film, const std::vector<double>& sums, double spp);
+  // The same for passes stopped inside one: rows below `rowsAhead` have passes + 1 samples.
+  static Image resolve(const Film& film, const std::vector<double>& sums, int passes, int rowsAhead);
 
  private:
   Scene scene_;

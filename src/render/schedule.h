@@ -21,6 +21,24 @@ inline bool startAnotherPass(int passesDone, double elapsedSeconds, double lastP
   return elapsedSeconds + lastPassSeconds <= budgetSeconds;
 }
 
+// Where the pass loop of pt, bdpt and erpt has got to: passes done, and the rows 0 .. rows - 1 of
+// the next one (every rank's units of them) done as well.
+struct PassPoint {
+  int passes = 0;
+  int rows = 0;
+};
+
+// A pass is taken in chunks of rows, the ranks agreeing on stop and save requests after each (a
+// large image's pass takes seconds): the next chunk's rows, from the slowest rank's `seconds` for
+// the last `taken`, aimed at kPassChunkSeconds and at most 4 times the last, within one pass.
+constexpr double kPassChunkSeconds = 0.1;  // a stop request waits about this long in a pass
+constexpr int kFirstPassChunkRows = 4;
+inline int nextPassChunk(int taken, double seconds, int height) {
+  const double most = 4.0 * double(std::max(taken, 1));
+  const double aimed = seconds > 0.0 ? kPassChunkSeconds * double(taken) / seconds : most;
+  return int(std::clamp(std::min(aimed, most), 1.0, double(std::max(height, 1))));
+}
+
 // The direct-emission pass of pssmlt and relt left on auto (--direct-emission-spp auto). Its rays
 // sit at the points of a (0,2)-sequence, whose error at an emitter's outline falls faster than
 // 1/N, and each costs about 1/30 of a chain mutation (one camera ray, no connections). Measured at

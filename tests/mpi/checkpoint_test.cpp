@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -156,6 +157,25 @@ TEST(Checkpoint, ACheckpointLeftBySigtermOrAKilledRankResumesToTheUninterruptedI
   }
 }
 
+// Packed placement (local decisions) with its messages read back 64 rounds late: the stop and the
+// save that precedes it (mpirun's SIGCONT) are agreed apart from the messages, at a round every
+// rank reaches; the checkpoint of that round resumes to the uninterrupted image.
+TEST(Checkpoint, APackedReltCheckpointLeftBySigtermResumesToTheUninterruptedImage) {
+  const std::string dir = makeTempDir("checkpoint-packed-stopped");
+  const std::string args = " --integrator relt --ladders 4 --placement packed --normaliser-lag 64 "
+                           "--normaliser-lag-growth 0 --exchange-interval 16 --width 64 --height 64 --seed 9 "
+                           "--mutations-per-pixel 400 ";
+  render(2, "cornell-box", "-o " + dir + "/whole.exr" + args);
+  const std::string ck = dir + "/ck", out = dir + "/stopped.exr";
+  const SignalledRun run = runAndSignal(mpirun(2) + reltBinary() + " render " + sourcePath("scenes/cornell-box.gltf") +
+                                            " -o " + out + args + "--checkpoint " + ck, dir + "/log.txt", "TERM");
+  EXPECT_LT(run.secondsAfterSignal, 10.0) << run.result.output;
+  EXPECT_NE(run.result.output.find("stopped early by a signal"), std::string::npos) << run.result.output;
+  EXPECT_TRUE(fileExists(out));
+  ASSERT_TRUE(fileExists(ck + "/checkpoint.relt")) << run.result.output;
+  expectResumedIs(readExr(dir + "/whole.exr"), dir, "cornell-box", args + "--resume " + ck, {2, 1});
+}
+
 // pssmlt stopped by SIGTERM to mpirun: the checkpoint of the round it stopped after resumes to the
 // uninterrupted image. The signal goes after the first progress line (1 s in), so the render must
 // last longer than that on an idle machine too (about 2.5 s here).
@@ -173,6 +193,34 @@ TEST(Checkpoint, APssmltCheckpointLeftBySigtermResumesToTheUninterruptedImage) {
   ASSERT_TRUE(fileExists(ck + "/checkpoint.relt")) << run.result.output;
   render(2, "cornell-box", "-o " + dir + "/resumed.exr" + args + "--resume " + ck);
   expectIdentical(readExr(dir + "/resumed.exr"), readExr(dir + "/whole.exr"));
+}
+
+// pt, bdpt and erpt agree on stop and save requests after chunks of rows of about 0.1 s: a stop
+// inside a pass (bdpt at 1024 x 768: about 0.7 s a pass on 2 ranks) writes the image of the rows
+// done, each pixel by its own samples, and a checkpoint there; the resume finishes that pass and
+// the rest: the image of the render that never stopped. A stop between passes is possible (one
+// chunk in several ends one), so the stop is tried up to three times.
+TEST(Checkpoint, AStopInsideAPassResumesToTheUninterruptedImage) {
+  const std::string dir = makeTempDir("checkpoint-inside-a-pass");
+  const std::string args = " --integrator bdpt --width 1024 --height 768 --seed 6 --spp 6 ";
+  render(2, "cornell-box", "-o " + dir + "/whole.exr" + args);
+  const Image whole = readExr(dir + "/whole.exr");
+  const std::string ck = dir + "/ck", out = dir + "/stopped.exr", stats = dir + "/stopped.json";
+  int rows = 0;
+  for (int attempt = 0; attempt < 3 && rows == 0; ++attempt) {
+    std::filesystem::remove_all(ck);
+    const SignalledRun run = runAndSignal(mpirun(2) + reltBinary() + " render " + sourcePath("scenes/cornell-box.gltf") +
+                                              " -o " + out + args + "--checkpoint " + ck + " --stats " + stats,
+                                          dir + "/log.txt", "TERM");
+    ASSERT_TRUE(fileExists(stats)) << run.result.output;
+    const nlohmann::json j = nlohmann::json::parse(std::ifstream(stats));
+    ASSERT_TRUE(j["interrupted"].get<bool>()) << run.result.output;
+    rows = j.value("rows_of_the_stopped_pass", 0);
+    for (float v : readExr(out).rgb) ASSERT_TRUE(std::isfinite(v));
+  }
+  ASSERT_GT(rows, 0) << "every stop fell between two passes";
+  EXPECT_NEAR(readExr(out).mean(), whole.mean(), 0.05 * whole.mean()) << "rows resolved by their own samples";
+  expectResumedIs(whole, dir, "cornell-box", args + "--resume " + ck, {2, 1});
 }
 
 // A stop during pssmlt's or relt's direct-emission pass (here a long one: 2^17 rays per pixel,

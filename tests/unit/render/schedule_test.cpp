@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include "render/renderer.h"
 #include "render/schedule.h"
 
 using namespace relt;
@@ -28,6 +29,23 @@ TEST(Schedule, TimedRenderStopsBeforeOverrunningTheBudget) {
   EXPECT_TRUE(startAnotherPass(0, 5.0, 5.0, 1.0));  // the first pass always runs
   EXPECT_TRUE(startAnotherPass(3, 0.6, 0.2, 1.0));
   EXPECT_FALSE(startAnotherPass(4, 0.9, 0.2, 1.0));
+}
+
+TEST(Schedule, PassChunksAimAtATenthOfASecondGrowAtMostFourfoldAndStayWithinAPass) {
+  EXPECT_EQ(nextPassChunk(4, 0.001, 1000), 16);  // far too short: four times the last
+  EXPECT_EQ(nextPassChunk(64, 0.2, 1000), 32);   // too long: the rows of a tenth of a second
+  EXPECT_EQ(nextPassChunk(10, 0.1, 1000), 10);
+  EXPECT_EQ(nextPassChunk(400, 0.01, 768), 768);  // at most a pass
+  EXPECT_EQ(nextPassChunk(3, 30.0, 1000), 1);     // at least a row
+  EXPECT_EQ(nextPassChunk(5, 0.0, 1000), 20);     // untimed (a stall-free clock tick): grow
+}
+
+TEST(Schedule, APassStoppedInsideIsResolvedRowByRowByEachPixelsOwnSamples) {
+  Film film(2, 3);
+  std::vector<double> sums(film.data().size(), 6.0);
+  const Image image = Renderer::resolve(film, sums, 2, 1);  // 2 passes and row 0 of the third
+  for (size_t i = 0; i < image.rgb.size(); ++i) EXPECT_FLOAT_EQ(image.rgb[i], i < 6 ? 2.0f : 3.0f) << i;
+  EXPECT_EQ(Renderer::resolve(film, sums, 1, 0).rgb, Renderer::resolve(film, sums, 1.0).rgb);
 }
 
 TEST(ProgressLine, ShowsPercentElapsedEtaAndRateInTheGivenUnit) {
