@@ -237,7 +237,8 @@ void PendingAllgatherv::test() {
   if (request_ != MPI_REQUEST_NULL) MPI_Test(&request_, &done, MPI_STATUS_IGNORE);
 }
 
-std::vector<std::vector<double>> PendingAllgatherv::wait(const std::function<void()>& idle) {
+void PendingAllgatherv::complete(const std::function<void()>& idle) {
+  if (request_ == MPI_REQUEST_NULL) return;
   timed([&] {
     if (!idle) MPI_Wait(&request_, MPI_STATUS_IGNORE);
     for (int done = 0; idle && !done;) {
@@ -245,6 +246,10 @@ std::vector<std::vector<double>> PendingAllgatherv::wait(const std::function<voi
       if (!done) idle();
     }
   });
+}
+
+std::vector<std::vector<double>> PendingAllgatherv::wait(const std::function<void()>& idle) {
+  complete(idle);
   std::vector<std::vector<double>> out(counts_.size());
   for (size_t r = 0; r < counts_.size(); ++r)
     out[r].assign(all_.begin() + offsets_[r], all_.begin() + offsets_[r] + counts_[r]);

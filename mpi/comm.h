@@ -85,6 +85,8 @@ class PendingAllgatherv {
   std::vector<std::vector<double>> wait(const std::function<void()>& idle = {});
   // Lets MPI advance the collective (Open MPI moves a nonblocking collective only inside MPI calls).
   void test();
+  // Completes it, counted as collective time (wait() then returns at once); `idle` as for wait().
+  void complete(const std::function<void()>& idle = {});
 
  private:
   std::vector<double> mine_, all_;

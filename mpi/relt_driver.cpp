@@ -97,6 +97,11 @@ class MpiTransport final : public RoundTransport {
       if (!group.empty()) group.front()->test();
     if (channel_) channel_->poll();
   }
+  void settle(int group, size_t newest) override {
+    const auto& q = pending_[size_t(group)];
+    if (q.size() <= newest) return;
+    for (size_t i = 0; i < q.size() - newest; ++i) q[i]->complete(idle_);
+  }
   std::optional<RequestAgreement> requests(uint64_t rounds, bool stop, bool save) override {
     return channel_ ? channel_->at(rounds, stop, save) : RoundTransport::requests(rounds, stop, save);
   }

@@ -91,7 +91,12 @@ stop_row() {
 import json, sys
 image, ck, final = open(sys.argv[1] + "/seen.txt").read().split()
 j = json.load(open(sys.argv[1] + "/stats.json"))
-done = str(j["relt"]["rounds"]) if "relt" in j else "%d passes + %d rows" % (j["spp"], j.get("rows_of_the_stopped_pass", 0))
+if "relt" in j:
+    done = str(j["relt"]["rounds"])
+elif "spp" in j:
+    done = "%d passes + %d rows" % (j["spp"], j.get("rows_of_the_stopped_pass", 0))
+else:  # stopped in the direct-emission pass, before the chains
+    done = "direct pass, %d rays per pixel" % j["direct_emission_spp"]
 print("| %s | | | | %s | %s | %s | %s |" % (sys.argv[2], done, image, ck, final))
 PY
 }

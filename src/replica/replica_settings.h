@@ -1,7 +1,10 @@
 #pragma once
 // Options of the replica-exchange integrator and where its chains live (DESIGN §4).
 #include <algorithm>
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string_view>
 
@@ -62,6 +65,18 @@ struct AnnealingSettings {
 inline uint64_t normaliserLagAt(int lag, int growth, uint64_t postedRounds) {
   const uint64_t base = uint64_t(lag > 0 ? lag : 1);
   return growth > 0 ? std::clamp(postedRounds / uint64_t(growth), base, 8 * base) : base;
+}
+
+// With local decisions a rank may run ahead of the slowest by as many rounds as the normaliser
+// lag, and a stop request takes effect once the others have caught up with it. A rank therefore
+// also waits, without reading them back (the image does not change), for the collectives older
+// than about kMaxLeadSeconds of its rounds: a stall shorter than that still costs nobody else, and
+// a stop is acted on within it. The rounds a rank may lead by, from its seconds per round so far
+// (0: not measured yet, no cap).
+constexpr double kMaxLeadSeconds = 0.3;
+inline size_t leadCapRounds(double secondsPerRound) {
+  if (!(secondsPerRound > 0.0)) return std::numeric_limits<size_t>::max();
+  return size_t(std::clamp(std::ceil(kMaxLeadSeconds / secondsPerRound), 1.0, 1e9));
 }
 
 struct ReplicaSettings {

@@ -43,6 +43,8 @@ struct Stepper {
     const bool inMessages = !pool.localDecisions();
     const bool stop = inMessages && hooks.stop && hooks.stop(), save = inMessages && hooks.save && hooks.save();
     transport.post(group, pool.roundMessage(group, hooks.elapsed(), seconds, stop, save), lengths[size_t(group)]);
+    // A stop waits for the slowest rank to catch up: bound the lead (leadCapRounds).
+    if (!inMessages) transport.settle(group, leadCapRounds(sum / steppings * double(pool.groups())));
   }
   // Completes a group's collective for round `round`: exchanges, normalisers, chain moves.
   // Returns the agreement; a stop request of any group's round is remembered (every rank reads the

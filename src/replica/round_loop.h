@@ -56,6 +56,9 @@ class RoundTransport {
     if (!stop && !save) return std::nullopt;
     return RequestAgreement{rounds, stop, save};
   }
+  // Local decisions only: completes (keeping them for wait) all but the newest `newest` of the
+  // group's collectives in flight, so this rank leads the slowest by at most that many rounds.
+  virtual void settle(int /*group*/, size_t /*newest*/) {}
   // Local decisions only: the loop's end, on every rank after the same round (an agreement under
   // way is completed and dropped).
   virtual void endRequests() {}

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <optional>
 
 #include "render/renderer.h"
@@ -505,8 +506,17 @@ TEST(NormaliserLag, GrowsWithTheRoundFromTheBaseToEightTimesIt) {
   EXPECT_EQ(normaliserLagAt(32, 8, 256), 32u);
   EXPECT_EQ(normaliserLagAt(32, 8, 264), 33u);
   EXPECT_EQ(normaliserLagAt(32, 8, 2048), 256u);
-  EXPECT_EQ(normaliserLagAt(32, 8, 100000), 256u) << "capped: a stop request is read back within 8 x the base";
+  EXPECT_EQ(normaliserLagAt(32, 8, 100000), 256u) << "capped at 8 x the base";
   EXPECT_EQ(normaliserLagAt(32, 0, 8000), 32u) << "0: fixed";
+}
+
+// A rank with local decisions leads the slowest by about kMaxLeadSeconds of rounds at most, so a
+// stop (acted on once all have caught up) waits no longer, however long the lag.
+TEST(NormaliserLag, ARanksLeadIsCappedBySecondsOfItsRoundsNotByTheLag) {
+  EXPECT_EQ(leadCapRounds(0.005), 60u);  // 207 rounds/s: 60 rounds, not the lag's 256
+  EXPECT_EQ(leadCapRounds(0.1), 3u);
+  EXPECT_EQ(leadCapRounds(2.0), 1u) << "at least the round before";
+  EXPECT_EQ(leadCapRounds(0.0), std::numeric_limits<size_t>::max()) << "not measured yet: no cap";
 }
 
 // Both placements read back at the lag of each round: unread rounds are the lag less one.
