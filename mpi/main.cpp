@@ -168,7 +168,7 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
       ->check(CLI::IsMember({"auto"}) | CLI::Range(0, relt::kDirectMaxSpp))
       ->capture_default_str();
   cmd.add_option("--snapshot-every", r.snapshotEvery,
-                 "pssmlt, mmlt: write the image so far (atomically) every this many seconds")
+                 "write the image so far (atomically) every this many seconds")
       ->check(kPositive);
   cmd.add_option("--erpt-max-consecutive", r.erptMaxConsecutive,
                  "erpt: stop depositing after this many mutations on one pixel (biased noise filter; 0 = off)")
@@ -330,8 +330,6 @@ int main(int argc, char** argv) {
       throw relt::InputError("", "--direct-emission-spp", "only for pssmlt and relt");
     if (o.render.integrator != relt::Integrator::Erpt && (o.render.erptMaxConsecutive > 0 || o.render.erptProposalFilter))
       throw relt::InputError("", "--erpt-max-consecutive/--erpt-proposal-filter", "only for erpt");
-    if (o.render.integrator == relt::Integrator::Erpt && o.render.snapshotEvery > 0.0)
-      throw relt::InputError("", "--snapshot-every", "not available for erpt");
     checkReplicaOptions(o);
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
     relt::mpi::startStallWatchdog(o.stallTimeout);

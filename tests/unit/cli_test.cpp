@@ -52,7 +52,6 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"MissingOutput", "render " + kScene, "output"},
                       BadInvocation{"SppWithPssmlt", "render " + kScene + " -o OUT --integrator pssmlt --spp 4", "mutations-per-pixel"},
                       BadInvocation{"MutationsWithBdpt", "render " + kScene + " -o OUT --mutations-per-pixel 4", "pssmlt"},
-                      BadInvocation{"SnapshotWithErpt", "render " + kScene + " -o OUT --integrator erpt --snapshot-every 1", "--snapshot-every"},
                       BadInvocation{"ZeroChains", "render " + kScene + " -o OUT --integrator pssmlt --chains 0", "chains"},
                       BadInvocation{"ZeroChainLength", "render " + kScene + " -o OUT --integrator erpt --chain-length 0", "chain-length"},
                       BadInvocation{"DirectEmissionWithMmlt", "render " + kScene + " -o OUT --integrator mmlt --direct-emission-spp 16", "only for pssmlt and relt"},
