@@ -4,11 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 #include "comm.h"
 #include "interrupt.h"
 #include "core/error.h"
 #include "image/compare.h"
+#include "image/image.h"
 #include "render/schedule.h"
 #include "render_driver.h"
 #include "replica/permutation.h"
@@ -132,7 +134,7 @@ void addReplicaOptions(CLI::App& cmd, Options& o) {
 void addRenderOptions(CLI::App& cmd, Options& o) {
   relt::RenderSettings& r = o.render;
   cmd.add_option("scene", r.scenePath, "glTF 2.0 scene (.gltf or .glb)")->required();
-  cmd.add_option("-o,--output", r.output, "output image (OpenEXR, float RGB)")->required();
+  cmd.add_option("-o,--output", r.output, "output image: .exr (OpenEXR, float RGB, with metadata) or .png (sRGB)")->required();
   cmd.add_option("--png", r.png, "also write an sRGB PNG preview");
   cmd.add_option("--stats", r.stats, "write settings and statistics as JSON");
   cmd.add_option("--integrator", o.integrator, "light transport algorithm")
@@ -200,6 +202,16 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--resume", o.checkpoint.resume,
                  "continue the render of this checkpoint folder (same scene and settings; the budget is the total)");
   cmd.add_option("--mis", o.mis, "MIS heuristic")->check(CLI::IsMember({"power", "balance"}))->capture_default_str();
+}
+
+// The image format follows -o's extension; --png is a PNG; layers need an EXR.
+void checkOutputNames(const relt::RenderSettings& r) {
+  const std::optional<relt::ImageFormat> format = relt::imageFormatOf(r.output);
+  if (!format) throw relt::InputError(r.output, "", "unknown image format: name the output .exr or .png");
+  if (!r.png.empty() && relt::imageFormatOf(r.png) != relt::ImageFormat::Png)
+    throw relt::InputError(r.png, "--png", "a PNG preview's name ends in .png");
+  if (r.replica.perLevel && format != relt::ImageFormat::Exr)
+    throw relt::InputError(r.output, "--per-level", "the levels are EXR layers: name the output .exr");
 }
 
 // Replica options belong to relt alone, and a few combinations cannot work.
@@ -330,6 +342,7 @@ int main(int argc, char** argv) {
       throw relt::InputError("", "--direct-emission-spp", "only for pssmlt and relt");
     if (o.render.integrator != relt::Integrator::Erpt && (o.render.erptMaxConsecutive > 0 || o.render.erptProposalFilter))
       throw relt::InputError("", "--erpt-max-consecutive/--erpt-proposal-filter", "only for erpt");
+    checkOutputNames(o.render);
     checkReplicaOptions(o);
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
     relt::mpi::startStallWatchdog(o.stallTimeout);

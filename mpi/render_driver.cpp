@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "checkpoint/checkpoint.h"
+#include "relt_commit.h"
 #include "checkpoint_io.h"
 #include "core/error.h"
 #include "render/renderer.h"
@@ -72,27 +73,54 @@ void checkCheckpointFolders(const Session& session, const CheckpointPlan& plan) 
 // Pixels zeroed by writeImages over the render (snapshots and the final image).
 uint64_t nonFinitePixelsZeroed = 0;
 
-// EXR (with optional extra layers) and optional PNG, each written atomically. Root only. Every
-// image goes out through here, so here a NaN or infinite pixel is written as 0, counted and
-// reported: a safety net, the integrators must not make them. Returns the image as written.
-Image writeImages(const RenderSettings& settings, Image image, std::vector<ImageLayer> layers = {}) {
+// What an EXR says of its render: the integrator, the settings, the commit, and for the final
+// image (`stats` given) the samples or mutations taken and the seconds.
+ImageAttributes renderAttributes(const RenderSettings& settings, const nlohmann::json& stats) {
+  ImageAttributes a = {{"relt:integrator", integratorName(settings.integrator)},
+                       {"relt:settings", settings.toJson().dump()},
+                       {"relt:commit", RELT_COMMIT}};
+  if (stats.is_null()) return a;
+  for (const char* key : {"spp", "mutations", "render_seconds", "interrupted"})
+    if (stats.contains(key)) a.emplace_back(std::string("relt:") + key, stats[key].dump());
+  return a;
+}
+
+// The image as -o names it (EXR with optional extra layers and metadata, or PNG) and the optional
+// PNG, each written atomically. Root only. Every image goes out through here, so here a NaN or
+// infinite pixel is written as 0, counted and reported: a safety net, the integrators must not
+// make them. Returns the image as written.
+Image writeImages(const RenderSettings& settings, Image image, std::vector<ImageLayer> layers = {},
+                  const nlohmann::json& stats = {}) {
   uint64_t zeroed = zeroNonFinitePixels(image);
   for (ImageLayer& layer : layers) zeroed += zeroNonFinitePixels(layer.image);
   if (zeroed > 0)
     std::fprintf(stderr, "relt: warning: %llu non-finite pixels written as 0 to %s (an integrator made them)\n",
                  static_cast<unsigned long long>(zeroed), settings.output.c_str());
   nonFinitePixelsZeroed += zeroed;
-  writeExr(settings.output, image, layers);
+  if (imageFormatOf(settings.output) == ImageFormat::Png)
+    writePng(settings.output, image, settings.exposure);
+  else
+    writeExr(settings.output, image, layers, renderAttributes(settings, stats));
   if (!settings.png.empty()) writePng(settings.png, image, settings.exposure);
   return image;
+}
+
+// "a.exr, a.png and a.json": every file a render writes, for its closing line.
+std::string filesWritten(const RenderSettings& s) {
+  std::vector<std::string> files;
+  for (const std::string& f : {s.output, s.png, s.stats, s.trace})
+    if (!f.empty()) files.push_back(f);
+  std::string out;
+  for (size_t i = 0; i < files.size(); ++i) out += (i == 0 ? "" : i + 1 == files.size() ? " and " : ", ") + files[i];
+  return out;
 }
 
 // The images and the stats (with the wall time added). Root only.
 void writeOutputs(const RenderSettings& settings, const Image& image, nlohmann::json stats, Clock::time_point wallStart,
                   const std::vector<ImageLayer>& layers = {}) {
-  stats["image_mean"] = writeImages(settings, image, layers).mean();  // of the image as written
-  stats["nonfinite_pixels_zeroed"] = nonFinitePixelsZeroed;
   stats["interrupted"] = stopAgreed();
+  stats["image_mean"] = writeImages(settings, image, layers, stats).mean();  // of the image as written
+  stats["nonfinite_pixels_zeroed"] = nonFinitePixelsZeroed;
   if (checkpointTally().written > 0)
     stats["checkpoints"] = {{"written", checkpointTally().written}, {"seconds", checkpointTally().seconds}};
   if (stopAgreed())
@@ -264,7 +292,7 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
   std::fprintf(stderr, "relt: %llu mutations in %llu rounds, %.2f s, %.3f M mutations/s, %llu round trips; wrote %s\n",
                static_cast<unsigned long long>(mutations), static_cast<unsigned long long>(o.rounds), g.renderSeconds,
                j["mutations_per_second"].get<double>() * 1e-6, static_cast<unsigned long long>(o.roundTrips),
-               settings.output.c_str());
+               filesWritten(settings).c_str());
 }
 
 // pssmlt and mmlt: the chains' image (plus the direct emission apart), their counters in stats.json.
@@ -310,7 +338,7 @@ void renderChains(const Session& session, Renderer& renderer, const RenderSettin
   writeOutputs(settings, image, j, wallStart);
   std::fprintf(stderr, "relt: %llu mutations, %.2f s, %.3f M mutations/s; wrote %s\n",
                static_cast<unsigned long long>(mutations), g.renderSeconds,
-               mutations / std::max(g.renderSeconds, 1e-9) * 1e-6, settings.output.c_str());
+               mutations / std::max(g.renderSeconds, 1e-9) * 1e-6, filesWritten(settings).c_str());
 }
 
 // pssmlt and relt stopped during the direct-emission pass: the image of the pass so far (the chains
@@ -326,7 +354,7 @@ void finishInThePass(const Session& session, const Renderer& renderer, const Ren
   addDirectStats(j, settings, direct);
   writeOutputs(settings, image, j, wallStart);
   std::fprintf(stderr, "relt: stopped in the direct-emission pass (%d rays per pixel), %.2f s; wrote %s\n", direct.spp,
-               g.renderSeconds, settings.output.c_str());
+               g.renderSeconds, filesWritten(settings).c_str());
 }
 
 // erpt: its image (with the proposal filter, if asked) and counters in stats.json.
@@ -358,7 +386,7 @@ void renderErpt(const Session& session, Renderer& renderer, const RenderSettings
   writeOutputs(settings, image, j, wallStart);
   std::fprintf(stderr, "relt: %llu seeds, %llu chains, %llu mutations, %.2f s; wrote %s\n",
                static_cast<unsigned long long>(o.counters.seeds), static_cast<unsigned long long>(o.counters.chains),
-               static_cast<unsigned long long>(o.counters.mutations), g.renderSeconds, settings.output.c_str());
+               static_cast<unsigned long long>(o.counters.mutations), g.renderSeconds, filesWritten(settings).c_str());
 }
 
 // pt and bdpt: a checkpoint is the film and where the passes got to (pass k's samples depend on k only).
@@ -405,10 +433,10 @@ void renderPasses(const Session& session, Renderer& renderer, const RenderSettin
   j["samples_per_second_per_rank"] = samplesNow / std::max(g.renderSeconds, 1e-9) / session.size();
   if (resumed) j["resumed_from"] = {{"checkpoint", resumed->file}, {"progress", resumed->progress}};
   writeOutputs(settings, image, j, wallStart);
-  std::fprintf(stderr, "relt: %d spp, %.2f s, %.3f M samples/s, %.2f M rays/s; wrote %s%s%s\n", passes,
+  std::fprintf(stderr, "relt: %d spp, %.2f s, %.3f M samples/s, %.2f M rays/s; wrote %s\n", passes,
                g.renderSeconds, samplesNow / std::max(g.renderSeconds, 1e-9) * 1e-6,
                g.rays / std::max(g.renderSeconds, 1e-9) * 1e-6,
-               settings.output.c_str(), settings.png.empty() ? "" : " and ", settings.png.c_str());
+               filesWritten(settings).c_str());
 }
 
 }  // namespace

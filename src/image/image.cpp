@@ -5,9 +5,11 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -103,11 +105,23 @@ void insertRgb(Imf::FrameBuffer& fb, const Image& image, const std::string& pref
 }
 }  // namespace
 
-void writeExr(const std::string& path, const Image& image, const std::vector<ImageLayer>& layers) {
+std::optional<ImageFormat> imageFormatOf(const std::string& path) {
+  const size_t dot = path.find_last_of('.'), slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return std::nullopt;
+  std::string ext = path.substr(dot + 1);
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == "exr") return ImageFormat::Exr;
+  if (ext == "png") return ImageFormat::Png;
+  return std::nullopt;
+}
+
+void writeExr(const std::string& path, const Image& image, const std::vector<ImageLayer>& layers,
+              const ImageAttributes& attributes) {
   const std::string tmp = temporaryPathFor(path);
   try {
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
+    for (const auto& [name, value] : attributes) header.insert(name, Imf::StringAttribute(value));
     for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
     for (const ImageLayer& layer : layers)
       for (const char* c : {"R", "G", "B"}) header.channels().insert(layer.name + "." + c, Imf::Channel(Imf::FLOAT));
@@ -122,6 +136,19 @@ void writeExr(const std::string& path, const Image& image, const std::vector<Ima
     throw InputError(path, "", std::string("cannot write EXR: ") + e.what());
   }
   commitTemporary(tmp, path);
+}
+
+ImageAttributes readExrAttributes(const std::string& path) {
+  try {
+    Imf::InputFile file(path.c_str());
+    ImageAttributes out;
+    for (auto it = file.header().begin(); it != file.header().end(); ++it)
+      if (const auto* text = dynamic_cast<const Imf::StringAttribute*>(&it.attribute()))
+        out.emplace_back(it.name(), text->value());
+    return out;
+  } catch (const std::exception& e) {
+    throw InputError(path, "", std::string("cannot read EXR: ") + e.what());
+  }
 }
 
 Image readExr(const std::string& path, const std::string& layer) {

@@ -3,7 +3,9 @@
 // Every write goes to a temporary file in the same directory and is renamed into place, so a
 // reader never sees a partial image.
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace relt {
@@ -28,8 +30,18 @@ struct ImageLayer {
   Image image;
 };
 
+// What a file name's extension (any case) asks for: .exr or .png; anything else is none.
+enum class ImageFormat { Exr, Png };
+std::optional<ImageFormat> imageFormatOf(const std::string& path);
+
+// Text attributes of an EXR header (name, value), e.g. what rendered it.
+using ImageAttributes = std::vector<std::pair<std::string, std::string>>;
+
 // Throws InputError (file, "", reason) if the file cannot be written or read.
-void writeExr(const std::string& path, const Image& image, const std::vector<ImageLayer>& layers = {});
+void writeExr(const std::string& path, const Image& image, const std::vector<ImageLayer>& layers = {},
+              const ImageAttributes& attributes = {});
+// The header's text attributes, in the header's order.
+ImageAttributes readExrAttributes(const std::string& path);
 // The main RGB channels, or those of `layer`.
 Image readExr(const std::string& path, const std::string& layer = "");
 void writePng(const std::string& path, const Image& image, float exposure);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <tuple>
 
 #include <nlohmann/json.hpp>
@@ -50,6 +51,9 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"KelemenWeightsRemoved", "render " + kScene + " -o OUT --integrator pssmlt --kelemen-weights", "kelemen-weights"},
                       BadInvocation{"UnknownOption", "render " + kScene + " -o OUT --bogus 1", "bogus"},
                       BadInvocation{"MissingOutput", "render " + kScene, "output"},
+                      BadInvocation{"UnknownOutputFormat", "render " + kScene + " -o OUT.tiff", "unknown image format"},
+                      BadInvocation{"PngPreviewNotPng", "render " + kScene + " -o OUT --png OUT.jpg", "--png"},
+                      BadInvocation{"LayersInAPng", "render " + kScene + " -o OUT.png --integrator relt --per-level", "EXR layers"},
                       BadInvocation{"SppWithPssmlt", "render " + kScene + " -o OUT --integrator pssmlt --spp 4", "mutations-per-pixel"},
                       BadInvocation{"MutationsWithBdpt", "render " + kScene + " -o OUT --mutations-per-pixel 4", "pssmlt"},
                       BadInvocation{"ZeroChains", "render " + kScene + " -o OUT --integrator pssmlt --chains 0", "chains"},
@@ -206,6 +210,29 @@ TEST(Cli, RenderWritesExrPngAndStats) {
   EXPECT_TRUE(fileExists(dir + "/a.exr"));
   EXPECT_TRUE(fileExists(dir + "/a.png"));
   EXPECT_TRUE(fileExists(dir + "/a.json"));
+  // The closing line names every file written.
+  EXPECT_NE(r.output.find("wrote " + dir + "/a.exr, " + dir + "/a.png and " + dir + "/a.json"), std::string::npos)
+      << r.output;
+  // The EXR says what made it.
+  std::map<std::string, std::string> meta;
+  for (const auto& [name, value] : relt::readExrAttributes(dir + "/a.exr")) meta[name] = value;
+  EXPECT_EQ(meta["relt:integrator"], "bdpt");
+  EXPECT_EQ(meta["relt:spp"], "1");
+  EXPECT_EQ(nlohmann::json::parse(meta["relt:settings"])["width"], 32);
+  EXPECT_GT(std::stod(meta["relt:render_seconds"]), 0.0);
+  EXPECT_FALSE(meta["relt:commit"].empty());
+}
+
+// -o's extension picks the format: a .png output is a PNG (its signature), and no EXR is written.
+TEST(Cli, AnOutputNamedPngIsWrittenAsAPng) {
+  const std::string dir = makeTempDir("cli-png");
+  const CommandResult r = runCommand(reltBinary() + " render " + kScene + " -o " + dir + "/a.PNG --spp 1 --width 32 --height 24");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream png(dir + "/a.PNG", std::ios::binary);
+  char signature[8] = {};
+  png.read(signature, 8);
+  EXPECT_EQ(std::string(signature + 1, 3), "PNG");
+  EXPECT_FALSE(fileExists(dir + "/a.exr"));
 }
 
 // stats.json's settings say how the image was made: a timed render names no mutation count it did
