@@ -36,6 +36,18 @@ void timed(F&& f) {
   g_collectiveSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// Completes `requests`: blocking, or with `idle` run between tests (it must not block).
+void waitPolling(MPI_Request* requests, int count, const std::function<void()>& idle) {
+  if (!idle) {
+    MPI_Waitall(count, requests, MPI_STATUSES_IGNORE);
+    return;
+  }
+  for (int done = 0; !done;) {
+    MPI_Testall(count, requests, &done, MPI_STATUSES_IGNORE);
+    if (!done) idle();
+  }
+}
+
 // Ends this process when it has waited longer than `timeout` seconds in one collective: mpirun
 // then ends the whole job with an error. Open MPI itself ends the job when a rank dies, but not
 // when a rank stalls or a host disappears without its daemon noticing.
@@ -198,17 +210,13 @@ std::vector<std::vector<uint64_t>> transfer(const std::vector<Payload>& sends, c
       received[i].resize(static_cast<size_t>(count));
       MPI_Recv(received[i].data(), count, MPI_UINT64_T, receiveFrom[i], kTag, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     }
-    if (!idle) MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
-    for (int done = 0; idle && !done;) {
-      MPI_Testall(static_cast<int>(requests.size()), requests.data(), &done, MPI_STATUSES_IGNORE);
-      if (!done) idle();
-    }
+    waitPolling(requests.data(), static_cast<int>(requests.size()), idle);
   });
   return received;
 }
 
-void waitTimed(MPI_Request& request) {
-  timed([&] { MPI_Wait(&request, MPI_STATUS_IGNORE); });
+void waitTimed(MPI_Request& request, const std::function<void()>& idle) {
+  timed([&] { waitPolling(&request, 1, idle); });
 }
 }  // namespace relt::mpi
 
@@ -238,14 +246,7 @@ void PendingAllgatherv::test() {
 }
 
 void PendingAllgatherv::complete(const std::function<void()>& idle) {
-  if (request_ == MPI_REQUEST_NULL) return;
-  timed([&] {
-    if (!idle) MPI_Wait(&request_, MPI_STATUS_IGNORE);
-    for (int done = 0; idle && !done;) {
-      MPI_Test(&request_, &done, MPI_STATUS_IGNORE);
-      if (!done) idle();
-    }
-  });
+  if (request_ != MPI_REQUEST_NULL) waitTimed(request_, idle);
 }
 
 std::vector<std::vector<double>> PendingAllgatherv::wait(const std::function<void()>& idle) {

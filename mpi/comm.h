@@ -67,8 +67,9 @@ struct Payload {
 // While waiting, `idle` (if any) runs between tests (the request channel's poll).
 std::vector<std::vector<uint64_t>> transfer(const std::vector<Payload>& sends, const std::vector<int>& receiveFrom,
                                             const std::function<void()>& idle = {});
-// Completes `request`, counted as collective time (and watched for stalls) like the collectives here.
-void waitTimed(MPI_Request& request);
+// Completes `request`, counted as collective time (and watched for stalls) like the collectives
+// here; `idle` (if any) runs between tests while waiting.
+void waitTimed(MPI_Request& request, const std::function<void()>& idle = {});
 }  // namespace relt::mpi
 
 namespace relt::mpi {

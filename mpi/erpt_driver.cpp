@@ -56,12 +56,10 @@ PassStart restore(const Session& session, const Resumed& resumed, Film& film, Er
 // The image so far on the root (empty elsewhere; collective): the film's rows by their seeds per
 // pixel, the proposal filter applied if asked.
 Image imageSoFar(const Session& session, const Film& film, const std::vector<double>& proposals, PassPoint at) {
-  std::vector<double> sums = film.data(), tally = proposals;
-  reduceSumToRoot(sums);
+  Image image = reducedPassImage(session, film, at);
+  std::vector<double> tally = proposals;
   if (!tally.empty()) reduceSumToRoot(tally);
-  if (!session.isRoot()) return {};
-  Image image = Renderer::resolve(film, sums, at.passes, at.rows);
-  if (!tally.empty()) applyProposalFilter(image, tally);
+  if (session.isRoot() && !tally.empty()) applyProposalFilter(image, tally);
   return image;
 }
 

@@ -8,6 +8,7 @@
 
 #include "mcmc/round_schedule.h"
 #include "render/pace.h"
+#include "render/renderer.h"
 
 namespace relt::mpi {
 namespace {
@@ -43,6 +44,12 @@ nlohmann::json passProgress(PassPoint at, double elapsed) {
 
 PassStart passStartOf(const nlohmann::json& progress) {
   return {{progress.at("passes").get<int>(), progress.value("rows", 0)}, progress.at("elapsed").get<double>()};
+}
+
+Image reducedPassImage(const Session& session, const Film& film, PassPoint at) {
+  std::vector<double> sums = film.data();
+  reduceSumToRoot(sums);
+  return session.isRoot() ? Renderer::resolve(film, sums, at.passes, at.rows) : Image();
 }
 
 PassPoint runPasses(const Session& session, const RenderSettings& settings, const PassHooks& hooks,

@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "comm.h"
+#include "film/film.h"
+#include "image/image.h"
 #include "render/schedule.h"
 #include "render/settings.h"
 
@@ -25,6 +27,10 @@ struct PassStart {
 // an earlier release, taken between passes only, has no "rows").
 nlohmann::json passProgress(PassPoint at, double elapsed);
 PassStart passStartOf(const nlohmann::json& progress);
+
+// The image of the passes up to `at` on the root (empty elsewhere; collective): the ranks' films
+// summed, each row divided by its own samples.
+Image reducedPassImage(const Session& session, const Film& film, PassPoint at);
 
 struct PassHooks {
   std::function<void(uint64_t pass, int row)> renderUnit;  // every owned unit of every pass

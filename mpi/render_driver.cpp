@@ -406,9 +406,8 @@ void renderPasses(const Session& session, Renderer& renderer, const RenderSettin
   hooks.renderUnit = [&](uint64_t pass, int row) { renderer.renderRow(pass, row, film); };
   hooks.rate = [&](double elapsed) { return double(renderer.samples()) * session.size() / std::max(elapsed, 1e-9); };
   hooks.snapshot = [&](PassPoint at) {
-    std::vector<double> sums = film.data();
-    reduceSumToRoot(sums);
-    if (session.isRoot()) writeImages(settings, Renderer::resolve(film, sums, at.passes, at.rows));
+    const Image image = reducedPassImage(session, film, at);
+    if (session.isRoot()) writeImages(settings, image);
     ++snapshots;
   };
   hooks.chunkDone = [&, lastCheckpoint = start.elapsed](PassPoint at, double elapsed, bool more, bool save) mutable {

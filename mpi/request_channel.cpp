@@ -116,10 +116,7 @@ void RequestChannel::close() {
 void RequestChannel::barrier() {
   MPI_Request request;
   MPI_Ibarrier(comm_, &request);
-  for (int done = 0; !done;) {
-    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
-    if (!done) poll();
-  }
+  waitTimed(request, [this] { poll(); });
 }
 
 }  // namespace relt::mpi
