@@ -28,6 +28,17 @@ RenderSettings small(int directSpp) {
 
 const RankReduce kOneRank{[](double v) { return v; }, [](double v) { return v; }};
 
+// One rank that is asked to stop (or to save) when the pass's `chunk`-th agreement comes.
+RankReduce askedAtChunk(int chunk, bool stop) {
+  RankReduce r = kOneRank;
+  r.agree = [chunk, stop, asked = 0](double elapsed) mutable {
+    const bool now = ++asked == chunk;
+    return ChunkAgreement{elapsed, stop && now, !stop && now};
+  };
+  return r;
+}
+RankReduce stopsAtChunk(int chunk) { return askedAtChunk(chunk, true); }
+
 // One rank whose every max over ranks (the slowest rank's time) comes from `times`, in turn.
 RankReduce slowestRankTimes(std::deque<double>& times) {
   return {[&times](double) {
@@ -170,11 +181,8 @@ TEST(DirectPass, ThePassIsUnbiasedWhereTheProbeDecidedItRuns) {
 TEST(DirectPass, AStopRequestEndsThePassBetweenChunksWithEveryPixelAlike) {
   RenderSettings s = small(1 << 14);
   Renderer renderer(withLightInView(), s);
-  int asked = 0;
-  RankReduce stopsAtTheThird{[](double v) { return v; }, [](double v) { return v; }};
-  stopsAtTheThird.agree = [&](double elapsed) { return ChunkAgreement{elapsed, ++asked == 3, false}; };
   Film film(12, 10);
-  const DirectPass pass = renderDirectPass(renderer, 0, 1, film, stopsAtTheThird);
+  const DirectPass pass = renderDirectPass(renderer, 0, 1, film, stopsAtChunk(3));
   EXPECT_TRUE(pass.stopped);
   // Chunks of 4, then at most 4 times the last (each takes far less than the aimed 0.1 s): 4 + 16 + 64.
   EXPECT_EQ(pass.spp, 4 + 16 + 64);
@@ -192,11 +200,8 @@ TEST(DirectPass, AResumedPassEndsOnTheFilmOfOneThatNeverStopped) {
   ASSERT_EQ(renderDirectPass(whole, 0, 1, expected, kOneRank).spp, 256);
 
   Renderer first(withLightInView(), s);
-  int asked = 0;
-  RankReduce stopsAtTheSecond{[](double v) { return v; }, [](double v) { return v; }};
-  stopsAtTheSecond.agree = [&](double elapsed) { return ChunkAgreement{elapsed, ++asked == 2, false}; };
   Film film(12, 10);
-  const DirectPass stopped = renderDirectPass(first, 0, 1, film, stopsAtTheSecond);
+  const DirectPass stopped = renderDirectPass(first, 0, 1, film, stopsAtChunk(2));
   ASSERT_TRUE(stopped.stopped);
   ASSERT_EQ(stopped.spp, 4 + 16);
 
@@ -230,10 +235,8 @@ TEST(DirectPass, AResumedTimedPassEndsTheDoublingItWasStoppedIn) {
 // A save request agreed between chunks is handed on with the pass so far; the pass goes on.
 TEST(DirectPass, ASaveRequestIsHandedOnWithThePassSoFarAndThePassGoesOn) {
   Renderer renderer(withLightInView(), small(1 << 10));
-  int asked = 0;
   std::vector<std::pair<int, bool>> told;
-  RankReduce savesAtTheSecond{[](double v) { return v; }, [](double v) { return v; }};
-  savesAtTheSecond.agree = [&](double elapsed) { return ChunkAgreement{elapsed, false, ++asked == 2}; };
+  RankReduce savesAtTheSecond = askedAtChunk(2, false);
   savesAtTheSecond.chunkDone = [&](const DirectPass& sofar, bool save) { told.emplace_back(sofar.spp, save); };
   Film film(12, 10);
   const DirectPass pass = renderDirectPass(renderer, 0, 1, film, savesAtTheSecond);
