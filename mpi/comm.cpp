@@ -114,20 +114,33 @@ void allreduceSum(std::vector<double>& data) {
   });
 }
 
+namespace {
+
+// MPI_Reduce of `size` doubles from `send` (MPI_IN_PLACE allowed on the root) into `recv`, in
+// chunks: MPI counts are int, and large films (per-level layers) exceed them.
+void reduceChunks(const double* send, double* recv, size_t size, int root) {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  const size_t chunk = size_t(1) << 28;
+  timed([&] {
+    for (size_t off = 0; off < size; off += chunk) {
+      const int n = static_cast<int>(std::min(chunk, size - off));
+      const void* from = send == MPI_IN_PLACE ? MPI_IN_PLACE : send + off;
+      MPI_Reduce(from, rank == root ? recv + off : nullptr, n, MPI_DOUBLE, MPI_SUM, root, MPI_COMM_WORLD);
+    }
+  });
+}
+
+}  // namespace
+
 void reduceSumToRoot(std::vector<double>& data, int root) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  // MPI counts are int: reduce in chunks so large films (per-level layers) stay within range.
-  const size_t chunk = size_t(1) << 28;
-  timed([&] {
-    for (size_t off = 0; off < data.size(); off += chunk) {
-      const int n = static_cast<int>(std::min(chunk, data.size() - off));
-      if (rank == root)
-        MPI_Reduce(MPI_IN_PLACE, data.data() + off, n, MPI_DOUBLE, MPI_SUM, root, MPI_COMM_WORLD);
-      else
-        MPI_Reduce(data.data() + off, nullptr, n, MPI_DOUBLE, MPI_SUM, root, MPI_COMM_WORLD);
-    }
-  });
+  reduceChunks(rank == root ? static_cast<const double*>(MPI_IN_PLACE) : data.data(), data.data(), data.size(), root);
+}
+
+void reduceSumToRoot(const std::vector<double>& send, double* sumsOnRoot, int root) {
+  reduceChunks(send.data(), sumsOnRoot, send.size(), root);
 }
 
 double allreduceMax(double value) {

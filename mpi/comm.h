@@ -29,6 +29,9 @@ void startStallWatchdog(double timeoutSeconds);
 
 // Sum of a double buffer onto the root (in place on the root).
 void reduceSumToRoot(std::vector<double>& data, int root = 0);
+// The same into `sumsOnRoot` (room for send.size() doubles on the root, ignored elsewhere): no
+// copy of `send` is made.
+void reduceSumToRoot(const std::vector<double>& send, double* sumsOnRoot, int root = 0);
 // Element-wise sum over all ranks, result on every rank.
 void allreduceSum(std::vector<double>& data);
 double allreduceMax(double value);

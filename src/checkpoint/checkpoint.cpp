@@ -38,6 +38,16 @@ uint64_t fnv1a(const void* data, size_t bytes, uint64_t hash) {
   return hash;
 }
 
+uint64_t fnv1aWords(const void* data, size_t words, uint64_t hash) {
+  const auto* p = static_cast<const unsigned char*>(data);
+  for (size_t i = 0; i < words; ++i) {
+    uint64_t w;
+    std::memcpy(&w, p + i * sizeof w, sizeof w);  // the words may sit unaligned in a file's bytes
+    hash = (hash ^ w) * 0x100000001b3ull;
+  }
+  return hash;
+}
+
 std::string sceneDigest(const std::string& path, const std::string& summary) {
   std::string reason;
   const std::vector<uint8_t> bytes = readWholeFile(path, &reason).value_or(std::vector<uint8_t>());
@@ -45,17 +55,35 @@ std::string sceneDigest(const std::string& path, const std::string& summary) {
 }
 
 void writeCheckpoint(const std::string& dir, const Checkpoint& checkpoint) {
-  // Layout: magic, header length, header, word count, words, checksum of everything before it.
+  // Layout: magic, header length, header, word count, words, checksum of everything before it
+  // (FNV-1a by bytes up to the words, then by words: a film of megabytes costs milliseconds).
   const std::string header = checkpoint.header.dump();
-  std::string out = kMagic;
-  appendWord(out, header.size());
-  out += header;
-  appendWord(out, checkpoint.words.size());
-  out.append(reinterpret_cast<const char*>(checkpoint.words.data()), checkpoint.words.size() * sizeof(uint64_t));
-  appendWord(out, fnv1a(out.data(), out.size()));
-  const std::string file = checkpointFile(dir);
-  writeFileAtomically(file, out);
+  std::string prefix = kMagic;
+  appendWord(prefix, header.size());
+  prefix += header;
+  appendWord(prefix, checkpoint.words.size());
+  const std::string_view words(reinterpret_cast<const char*>(checkpoint.words.data()),
+                               checkpoint.words.size() * sizeof(uint64_t));
+  std::string checksum;
+  appendWord(checksum, fnv1aWords(words.data(), checkpoint.words.size(), fnv1a(prefix.data(), prefix.size())));
+  const std::string_view pieces[] = {prefix, words, checksum};
+  writeFileAtomically(checkpointFile(dir), pieces);
 }
+
+namespace {
+
+// Whether the checksum at `body` matches: as writeCheckpoint computes it, or by bytes throughout
+// (checkpoints written before the words were hashed as words).
+bool checksumMatches(const std::vector<uint8_t>& bytes, size_t body, size_t wordsAt) {
+  const uint64_t stored = wordAt(bytes, body);
+  const size_t start = wordsAt + sizeof(uint64_t);
+  if (start <= body && (body - start) % sizeof(uint64_t) == 0 &&
+      stored == fnv1aWords(bytes.data() + start, (body - start) / sizeof(uint64_t), fnv1a(bytes.data(), start)))
+    return true;
+  return stored == fnv1a(bytes.data(), body);
+}
+
+}  // namespace
 
 Checkpoint readCheckpoint(const std::string& dir) {
   const std::string file = checkpointFile(dir);
@@ -69,9 +97,11 @@ Checkpoint readCheckpoint(const std::string& dir) {
   auto corrupt = [&](const char* what) { return InputError(file, "", std::string("checkpoint is damaged: ") + what); };
   if (bytes.size() < magic + 3 * sizeof(uint64_t)) throw corrupt("truncated");
   const size_t body = bytes.size() - sizeof(uint64_t);
-  if (wordAt(bytes, body) != fnv1a(bytes.data(), body)) throw corrupt("checksum mismatch (truncated or modified)");
   const uint64_t headerLength = wordAt(bytes, magic);
-  if (headerLength > body - magic - 2 * sizeof(uint64_t)) throw corrupt("header length");
+  const bool lengthFits = headerLength <= body - magic - 2 * sizeof(uint64_t);
+  if (!checksumMatches(bytes, body, lengthFits ? magic + sizeof(uint64_t) + headerLength : body))
+    throw corrupt("checksum mismatch (truncated or modified)");
+  if (!lengthFits) throw corrupt("header length");
   Checkpoint c;
   try {
     const auto* text = bytes.data() + magic + sizeof(uint64_t);

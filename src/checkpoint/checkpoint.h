@@ -42,6 +42,9 @@ inline bool checkpointDue(double every, double elapsed, double lastCheckpoint, b
 
 // 64-bit FNV-1a of bytes, continuing from `hash`.
 uint64_t fnv1a(const void* data, size_t bytes, uint64_t hash = 0xcbf29ce484222325ull);
+// FNV-1a's step taken a 64-bit word at a time (8 times faster on a film of megabytes), continuing
+// from `hash`; every step is a bijection of the hash, so any one changed word changes the result.
+uint64_t fnv1aWords(const void* data, size_t words, uint64_t hash);
 // The digest of a scene file's bytes and of what was loaded from it (its summary), as hex.
 std::string sceneDigest(const std::string& path, const std::string& summary);
 

@@ -13,8 +13,15 @@ class WordWriter {
   void u64(uint64_t v) { words_.push_back(v); }
   void f64(double v) { words_.push_back(std::bit_cast<uint64_t>(v)); }
   void f64s(const std::vector<double>& v) {
+    words_.reserve(words_.size() + v.size());
     for (double x : v) f64(x);
   }
+  // Room for `n` words, to be filled in place (a reduction into a checkpoint's words).
+  uint64_t* slots(size_t n) {
+    words_.resize(words_.size() + n);
+    return words_.data() + words_.size() - n;
+  }
+  void reserve(size_t n) { words_.reserve(n); }
   // A length, then the words.
   void block(const std::vector<uint64_t>& v) {
     u64(v.size());

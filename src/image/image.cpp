@@ -79,10 +79,17 @@ void commitTemporary(const std::string& tmp, const std::string& path) {
 }
 
 void writeFileAtomically(const std::string& path, const std::string& content) {
+  const std::string_view piece = content;
+  writeFileAtomically(path, std::span<const std::string_view>(&piece, 1));
+}
+
+void writeFileAtomically(const std::string& path, std::span<const std::string_view> pieces) {
   const std::string tmp = temporaryPathFor(path);
   FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw InputError(path, "", std::string("cannot write: ") + std::strerror(errno));
-  const bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size() && std::fflush(f) == 0;
+  bool ok = true;
+  for (const std::string_view piece : pieces) ok = ok && std::fwrite(piece.data(), 1, piece.size(), f) == piece.size();
+  ok = ok && std::fflush(f) == 0;
   const std::string reason = ok ? "" : std::strerror(errno);
   const bool closed = std::fclose(f) == 0;
   if (!ok || !closed) {
@@ -116,11 +123,11 @@ std::optional<ImageFormat> imageFormatOf(const std::string& path) {
 }
 
 void writeExr(const std::string& path, const Image& image, const std::vector<ImageLayer>& layers,
-              const ImageAttributes& attributes) {
+              const ImageAttributes& attributes, ExrCompression compression) {
   const std::string tmp = temporaryPathFor(path);
   try {
     Imf::Header header(image.width, image.height);
-    header.compression() = Imf::ZIP_COMPRESSION;
+    header.compression() = compression == ExrCompression::Zip ? Imf::ZIP_COMPRESSION : Imf::NO_COMPRESSION;
     for (const auto& [name, value] : attributes) header.insert(name, Imf::StringAttribute(value));
     for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
     for (const ImageLayer& layer : layers)

@@ -4,7 +4,9 @@
 // reader never sees a partial image.
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -37,9 +39,13 @@ std::optional<ImageFormat> imageFormatOf(const std::string& path);
 // Text attributes of an EXR header (name, value), e.g. what rendered it.
 using ImageAttributes = std::vector<std::pair<std::string, std::string>>;
 
+// How an EXR is written: ZIP-compressed (about 30 % smaller on a render, but 0.7 s at 1024x768),
+// or uncompressed (0.02 s there) for images written against a clock (snapshots, a stop by signal).
+enum class ExrCompression { Zip, None };
+
 // Throws InputError (file, "", reason) if the file cannot be written or read.
 void writeExr(const std::string& path, const Image& image, const std::vector<ImageLayer>& layers = {},
-              const ImageAttributes& attributes = {});
+              const ImageAttributes& attributes = {}, ExrCompression compression = ExrCompression::Zip);
 // The header's text attributes, in the header's order.
 ImageAttributes readExrAttributes(const std::string& path);
 // The main RGB channels, or those of `layer`.
@@ -48,6 +54,8 @@ void writePng(const std::string& path, const Image& image, float exposure);
 
 // Writes `content` to `path` atomically (temporary file, fsync, rename).
 void writeFileAtomically(const std::string& path, const std::string& content);
+// The same for content in pieces, written one after the other (no copy into one buffer).
+void writeFileAtomically(const std::string& path, std::span<const std::string_view> pieces);
 // A temporary name next to `path` for atomic writes.
 std::string temporaryPathFor(const std::string& path);
 void commitTemporary(const std::string& tmp, const std::string& path);

@@ -81,6 +81,35 @@ TEST(CheckpointFile, ADamagedOrForeignFileIsRefusedNamingIt) {
   EXPECT_NE(errorOf([&] { readCheckpoint(dir); }).find("format 99"), std::string::npos);
 }
 
+// Checkpoints written before the words were hashed a word at a time (FNV-1a by bytes over the
+// whole file) still read; a flipped bit in any word of the new hash is caught.
+TEST(CheckpointFile, AByteHashedCheckpointStillReadsAndEveryWordIsChecked) {
+  const std::string dir = test::makeTempDir("checkpoint-legacy");
+  const std::string file = checkpointFile(dir);
+  Checkpoint c;
+  c.header = {{"format", 1}};
+  c.words = {5, 6, 7};
+  writeCheckpoint(dir, c);
+  std::string bytes;
+  {
+    std::ifstream in(file, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const size_t body = bytes.size() - sizeof(uint64_t);
+  const uint64_t legacy = fnv1a(bytes.data(), body);
+  std::string old = bytes.substr(0, body);
+  old.append(reinterpret_cast<const char*>(&legacy), sizeof legacy);
+  std::ofstream(file, std::ios::binary) << old;
+  EXPECT_EQ(readCheckpoint(dir).words, c.words);
+  for (size_t word = 0; word < c.words.size(); ++word)
+    for (int bit : {0, 63}) {
+      std::string flipped = bytes;
+      flipped[body - (c.words.size() - word) * sizeof(uint64_t) + bit / 8] ^= char(1 << (bit % 8));
+      std::ofstream(file, std::ios::binary) << flipped;
+      EXPECT_NE(errorOf([&] { readCheckpoint(dir); }).find("checksum mismatch"), std::string::npos) << word << " " << bit;
+    }
+}
+
 TEST(CheckpointFile, TheIdentityIgnoresBudgetsAndOutputsButNotWhatShapesTheImage) {
   RenderSettings a;
   a.integrator = Integrator::Relt;

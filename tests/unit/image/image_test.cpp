@@ -80,6 +80,19 @@ TEST(Image, ExrRoundTripIsBitExact) {
   EXPECT_EQ(entries(dir), std::vector<std::string>{"out.exr"});  // no temporary left behind
 }
 
+// Uncompressed (snapshots, a stop by signal) reads back the same bits as ZIP, and ZIP is smaller.
+TEST(Image, AnUncompressedExrReadsBackAsTheCompressedOne) {
+  Image image(64, 32);
+  for (size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = 0.25f + 1e-3f * float(i % 64);
+  const TempDir tmp("exr-compression");
+  const std::string zip = tmp.path + "/zip.exr", none = tmp.path + "/none.exr";
+  writeExr(zip, image, {}, {}, ExrCompression::Zip);
+  writeExr(none, image, {}, {}, ExrCompression::None);
+  EXPECT_EQ(readExr(none).rgb, image.rgb);
+  EXPECT_EQ(readExr(zip).rgb, image.rgb);
+  EXPECT_GT(std::filesystem::file_size(none), 2 * std::filesystem::file_size(zip));
+}
+
 TEST(Image, ExrOverwritesAnExistingFile) {
   const TempDir tmp("exr-over");
   const std::string& dir = tmp.path;
