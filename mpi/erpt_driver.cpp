@@ -1,5 +1,6 @@
 #include "erpt_driver.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "core/error.h"
@@ -19,53 +20,68 @@ ErptCounters sumOverRanks(const ErptCounters& local) {
   return s;
 }
 
-// The checkpoint's root part: the normaliser (a resume does not run the bootstrap again), the
-// counters summed over ranks and the proposal tally, reduced here; other ranks' parts are empty.
-std::vector<uint64_t> checkpointPart(const Session& session, const ErptOutcome& out, const ErptCounters& c) {
-  std::vector<double> proposals = out.proposals;
-  if (!proposals.empty()) reduceSumToRoot(proposals);
+// The checkpoint's root part at `at`: the normaliser (a resume does not run the bootstrap again),
+// the counters summed over ranks and the proposal tallies, reduced here; other ranks' parts are empty.
+std::vector<uint64_t> checkpointPart(const Session& session, PassFilm& film, PassPoint at, double normaliser,
+                                     const ErptCounters& c) {
+  std::vector<std::vector<double>> tallies;
+  for (const std::vector<double>& t : film.checkpointTallies(at)) {
+    tallies.push_back(t);
+    reduceSumToRoot(tallies.back());
+  }
   WordWriter w;
   if (!session.isRoot()) return w.words();
-  w.f64(out.normaliser);
+  w.f64(normaliser);
   for (uint64_t v : {c.seeds, c.chains, c.mutations, c.accepted, c.invalidProposals}) w.u64(v);
-  w.f64s(proposals);
+  for (const std::vector<double>& t : tallies) w.f64s(t);
   return std::move(w.words());
 }
 
 // The root takes the sums of the checkpoint, the other ranks start from zero; all take the normaliser.
-PassStart restore(const Session& session, const Resumed& resumed, Film& film, ErptOutcome& out, ErptCounters& local) {
-  resumed.restoreFilms({&film, 1});
+PassStart restore(const Session& session, const Resumed& resumed, PassFilm& film, ErptOutcome& out,
+                  ErptCounters& local) {
+  const PassStart start = passStartOf(resumed.progress);
+  resumed.restoreFilms(film.checkpointFilms(start.at));
   try {
     if (resumed.parts.empty()) throw std::runtime_error("the checkpoint holds no erpt state");
     WordReader in(resumed.parts[0]);
     out.normaliser = in.f64();
     ErptCounters c;
     for (uint64_t* v : {&c.seeds, &c.chains, &c.mutations, &c.accepted, &c.invalidProposals}) *v = in.u64();
-    const std::vector<double> proposals = in.f64s(out.proposals.size());
+    std::vector<std::vector<double>> tallies;
+    for (const std::vector<double>& t : film.checkpointTallies(start.at)) tallies.push_back(in.f64s(t.size()));
     if (!in.done()) throw std::runtime_error("the checkpoint's erpt state does not match this render's");
     if (session.isRoot()) {
       local = c;
-      out.proposals = proposals;
+      for (size_t k = 0; k < tallies.size(); ++k) film.checkpointTallies(start.at)[k] = std::move(tallies[k]);
     }
   } catch (const std::runtime_error& e) {
     throw InputError(resumed.file, "", e.what());
   }
-  return passStartOf(resumed.progress);
+  film.restored(start.at);
+  return start;
 }
 
-// The image so far on the root (empty elsewhere; collective): the film's rows by their seeds per
-// pixel, the proposal filter applied if asked.
-Image imageSoFar(const Session& session, const Film& film, const std::vector<double>& proposals, PassPoint at) {
+// The image at `at` on the root (empty elsewhere; collective): what the film shows there, by its
+// seeds per pixel, the proposal filter applied if asked.
+Image imageSoFar(const Session& session, const PassFilm& film, PassPoint at) {
   Image image = reducedPassImage(session, film, at);
-  std::vector<double> tally = proposals;
-  if (!tally.empty()) reduceSumToRoot(tally);
-  if (session.isRoot() && !tally.empty()) applyProposalFilter(image, tally);
+  std::vector<double> tally = film.tallyShown(at);
+  if (tally.empty()) return image;
+  reduceSumToRoot(tally);
+  if (session.isRoot()) applyProposalFilter(image, tally);
   return image;
 }
 
 }  // namespace
 
-ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
+PassFilm erptFilm(const RenderSettings& settings) {
+  const size_t pixels = size_t(settings.width) * settings.height;
+  return PassFilm(settings.width, settings.height, samplesStayInTheirRow(Integrator::Erpt),
+                  settings.erptProposalFilter ? pixels : 0);
+}
+
+ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, PassFilm& film,
                     const std::function<void(const Image&)>& snapshot, const CheckpointPlan& plan,
                     const Resumed* resumed) {
   ErptSettings es;
@@ -76,8 +92,6 @@ ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSett
   const int bootstrap = 100000;
   ErptOutcome out;
   ErptCounters local;
-  if (settings.erptProposalFilter) out.proposals.assign(static_cast<size_t>(settings.width) * settings.height, 0.0);
-  std::vector<double>* tally = settings.erptProposalFilter ? &out.proposals : nullptr;
   PassStart start;
   if (resumed)
     start = restore(session, *resumed, film, out, local);
@@ -87,11 +101,17 @@ ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSett
   // Passes of one seed per pixel, distributed and timed as pt's.
   PassHooks hooks;
   hooks.renderUnit = [&](uint64_t pass, int row) {
-    local.add(erptRow(eval, es, out.normaliser, settings.seed, pass, row, 1.0, film, tally));
+    local.add(erptRow(eval, es, out.normaliser, settings.seed, pass, row, 1.0, film.live(),
+                      film.tally().empty() ? nullptr : &film.tally()));
   };
+  // This run's mutations per second (a resumed root's counters hold the earlier runs' too).
+  hooks.rate = [&, earlier = local.mutations, since = start.elapsed](double elapsed) {
+    return double(local.mutations - earlier) * session.size() / std::max(elapsed - since, 1e-9);
+  };
+  hooks.rateUnit = "mutations";
   if (snapshot)
     hooks.snapshot = [&](PassPoint at) {
-      const Image image = imageSoFar(session, film, out.proposals, at);
+      const Image image = imageSoFar(session, film, at);
       if (session.isRoot()) snapshot(image);
     };
   hooks.chunkDone = [&, lastCheckpoint = start.elapsed](PassPoint at, double elapsed, bool more, bool save) mutable {
@@ -99,10 +119,11 @@ ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSett
     const ErptCounters sums = sumOverRanks(local);
     nlohmann::json progress = passProgress(at, elapsed);
     progress["mutations"] = sums.mutations;
-    saveCheckpoint(plan, "erpt", progress, {&film, 1}, checkpointPart(session, out, sums));
+    saveCheckpoint(plan, "erpt", progress, film.checkpointFilms(at),
+                   checkpointPart(session, film, at, out.normaliser, sums));
   };
-  out.end = runPasses(session, settings, hooks, start);
-  if (tally) reduceSumToRoot(out.proposals);
+  out.end = runPasses(session, settings, film, hooks, start);
+  out.image = imageSoFar(session, film, out.end);
   out.counters = sumOverRanks(local);
   return out;
 }

@@ -15,14 +15,18 @@ struct ErptOutcome {
   double normaliser = 0.0;  // mean energy of the bootstrap samples
   PassPoint end;             // seeds per pixel: end.passes, one more in rows 0 .. end.rows - 1
   ErptCounters counters;    // summed over ranks
-  std::vector<double> proposals;  // --erpt-proposal-filter: proposed mutations per pixel, on the root
+  Image image;              // on the root: the whole passes' (render/pass_film.h), filtered if asked
 };
 
-// Renders this rank's share into `film` (not yet reduced); collective. The root's `snapshot` (if
+// Makes the film runErpt fills: a chain wanders out of its row, and --erpt-proposal-filter tallies
+// the proposed mutations per pixel beside it.
+PassFilm erptFilm(const RenderSettings& settings);
+
+// Renders this rank's share into `film` (not reduced); collective. The root's `snapshot` (if
 // any) gets the image so far on a save request and every --snapshot-every seconds. `plan` writes
-// checkpoints (film, passes, counters, normaliser, proposal tally); a render resumed from
+// checkpoints (films, passes, counters, normaliser, proposal tallies); a render resumed from
 // `resumed` (or null) continues where it stopped without running the bootstrap again.
-ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
+ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, PassFilm& film,
                     const std::function<void(const Image&)>& snapshot = {}, const CheckpointPlan& plan = {},
                     const Resumed* resumed = nullptr);
 

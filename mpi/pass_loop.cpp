@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 
 #include "mcmc/round_schedule.h"
 #include "render/pace.h"
@@ -18,6 +19,7 @@ struct ProgressPrinter {
   const Session& session;
   const RenderSettings& settings;
   const std::function<double(double)>& rate;
+  const char* unit;
   double lastPrint;
   bool tty = ::isatty(STDERR_FILENO);
   bool printed = false;
@@ -29,7 +31,7 @@ struct ProgressPrinter {
     const double passes = at.passes + double(at.rows) / std::max(settings.height, 1);
     const double fraction = settings.seconds ? std::min(1.0, elapsed / *settings.seconds)
                                              : passes / settings.spp.value_or(16);
-    std::fprintf(stderr, tty ? "\r%s" : "%s\n", progressLine(fraction, elapsed, rate(elapsed)).c_str());
+    std::fprintf(stderr, tty ? "\r%s" : "%s\n", progressLine(fraction, elapsed, rate(elapsed), unit).c_str());
   }
   ~ProgressPrinter() {
     if (printed && tty) std::fprintf(stderr, "\n");
@@ -46,13 +48,14 @@ PassStart passStartOf(const nlohmann::json& progress) {
   return {{progress.at("passes").get<int>(), progress.value("rows", 0)}, progress.at("elapsed").get<double>()};
 }
 
-Image reducedPassImage(const Session& session, const Film& film, PassPoint at) {
-  std::vector<double> sums = film.data();
+Image reducedPassImage(const Session& session, const PassFilm& film, PassPoint at) {
+  std::vector<double> sums = film.sumsShown(at);
   reduceSumToRoot(sums);
-  return session.isRoot() ? Renderer::resolve(film, sums, at.passes, at.rows) : Image();
+  const PassPoint shown = film.shown(at);
+  return session.isRoot() ? Renderer::resolve(film.live(), sums, shown.passes, shown.rows) : Image();
 }
 
-PassPoint runPasses(const Session& session, const RenderSettings& settings, const PassHooks& hooks,
+PassPoint runPasses(const Session& session, const RenderSettings& settings, PassFilm& film, const PassHooks& hooks,
                     const PassStart& start) {
   using Clock = std::chrono::steady_clock;
   const auto clockStart = Clock::now();
@@ -64,12 +67,13 @@ PassPoint runPasses(const Session& session, const RenderSettings& settings, cons
   Pace pace;  // the passes' agreed durations: one that spanned a stall does not end the render early
   double passStart = start.elapsed, chunkStart = start.elapsed, lastSnapshot = start.elapsed;
   PassPoint at = start.at;
+  std::optional<PassPoint> lastShown;  // where the last snapshot was taken
   auto another = [&] {
     return timed ? startAnotherPass(at.passes, passStart, pace.typical(), *settings.seconds) : at.passes < spp;
   };
   // A pass begun (and checkpointed inside) is finished whatever the budget: it was started within it.
   if (at.rows == 0 && !another()) return at;
-  ProgressPrinter printer{session, settings, hooks.rate, start.elapsed};
+  ProgressPrinter printer{session, settings, hooks.rate, hooks.rateUnit, start.elapsed};
   int chunk = kFirstPassChunkRows;
   for (;;) {
     const int first = at.rows, end = std::min(height, first + chunk);
@@ -78,7 +82,10 @@ PassPoint runPasses(const Session& session, const RenderSettings& settings, cons
         hooks.renderUnit(uint64_t(at.passes), row);
     at.rows = end;
     const bool passEnd = end == height;
-    if (passEnd) at = {at.passes + 1, 0};
+    if (passEnd) {
+      at = {at.passes + 1, 0};
+      film.passEnded();
+    }
     // The ranks agree after every chunk, so all stop, snapshot and checkpoint at the same point.
     const Agreement agreed = agree(since());
     const double elapsed = agreed.elapsed;
@@ -90,8 +97,12 @@ PassPoint runPasses(const Session& session, const RenderSettings& settings, cons
     }
     const bool more = !agreed.stop && (!passEnd || another());
     const bool save = agreed.save && more;  // the last chunk is written anyway
-    if (hooks.snapshot && (save || (snapshots && snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more)))) {
+    // A save request always writes (an image must exist before the kill); a periodic snapshot only
+    // when it would show something new.
+    const bool due = snapshots && snapshotDue(settings.snapshotEvery, elapsed, lastSnapshot, more);
+    if (hooks.snapshot && (save || (due && film.showsNew(at, lastShown)))) {
       lastSnapshot = elapsed;
+      lastShown = at;
       hooks.snapshot(at);
     }
     printer.print(at, elapsed);

@@ -3,7 +3,8 @@
 // (k, row) this rank owns; --spp N runs N passes, --time decides collectively after each pass.
 // A pass is taken in chunks of rows (render/schedule.h, nextPassChunk), the ranks agreeing on the
 // elapsed time and on stop and save requests after each, so a request waits about 0.1 s however
-// long a pass takes; a render stopped inside a pass keeps the rows it did.
+// long a pass takes; a render stopped inside a pass keeps the rows it did (its image shows what
+// render/pass_film.h says).
 #include <functional>
 #include <string>
 
@@ -12,6 +13,7 @@
 #include "comm.h"
 #include "film/film.h"
 #include "image/image.h"
+#include "render/pass_film.h"
 #include "render/schedule.h"
 #include "render/settings.h"
 
@@ -28,14 +30,15 @@ struct PassStart {
 nlohmann::json passProgress(PassPoint at, double elapsed);
 PassStart passStartOf(const nlohmann::json& progress);
 
-// The image of the passes up to `at` on the root (empty elsewhere; collective): the ranks' films
-// summed, each row divided by its own samples.
-Image reducedPassImage(const Session& session, const Film& film, PassPoint at);
+// The image at `at` on the root (empty elsewhere; collective): the ranks' sums of what `film`
+// shows there, summed, each row divided by its own samples.
+Image reducedPassImage(const Session& session, const PassFilm& film, PassPoint at);
 
 struct PassHooks {
   std::function<void(uint64_t pass, int row)> renderUnit;  // every owned unit of every pass
   // Optional: the root prints a progress line at most once a second with rate(elapsed) samples/s.
   std::function<double(double elapsed)> rate = {};
+  const char* rateUnit = "samples";
   // Optional: on every rank after the same chunks, the image so far (on a save request, and every
   // --snapshot-every seconds).
   std::function<void(PassPoint)> snapshot = {};
@@ -46,7 +49,8 @@ struct PassHooks {
 };
 
 // Runs the passes and returns where they ended: whole passes, or inside one if a rank was stopped.
-PassPoint runPasses(const Session& session, const RenderSettings& settings, const PassHooks& hooks,
+// `film` (which renderUnit fills) is told of every pass end before the hooks see it.
+PassPoint runPasses(const Session& session, const RenderSettings& settings, PassFilm& film, const PassHooks& hooks,
                     const PassStart& start = {});
 
 }  // namespace relt::mpi

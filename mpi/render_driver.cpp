@@ -80,9 +80,16 @@ ImageAttributes renderAttributes(const RenderSettings& settings, const nlohmann:
                        {"relt:settings", settings.toJson().dump()},
                        {"relt:commit", RELT_COMMIT}};
   if (stats.is_null()) return a;
-  for (const char* key : {"spp", "mutations", "render_seconds", "interrupted"})
+  for (const char* key : {"spp", "image_rows_of_the_stopped_pass", "mutations", "render_seconds", "interrupted"})
     if (stats.contains(key)) a.emplace_back(std::string("relt:") + key, stats[key].dump());
   return a;
+}
+
+// Images written against a clock are not compressed: snapshots (a save request comes a second
+// before mpirun's SIGTERM) and the image of a render stopped by a signal (SIGKILL follows a second
+// later); ZIP would take most of that second on a 1024x768 film.
+ExrCompression exrCompressionOf(const nlohmann::json& stats) {
+  return stats.is_null() || stopAgreed() ? ExrCompression::None : ExrCompression::Zip;
 }
 
 // The image as -o names it (EXR with optional extra layers and metadata, or PNG) and the optional
@@ -100,7 +107,7 @@ Image writeImages(const RenderSettings& settings, Image image, std::vector<Image
   if (imageFormatOf(settings.output) == ImageFormat::Png)
     writePng(settings.output, image, settings.exposure);
   else
-    writeExr(settings.output, image, layers, renderAttributes(settings, stats));
+    writeExr(settings.output, image, layers, renderAttributes(settings, stats), exrCompressionOf(stats));
   if (!settings.png.empty()) writePng(settings.png, image, settings.exposure);
   return image;
 }
@@ -113,6 +120,22 @@ std::string filesWritten(const RenderSettings& s) {
   std::string out;
   for (size_t i = 0; i < files.size(); ++i) out += (i == 0 ? "" : i + 1 == files.size() ? " and " : ", ") + files[i];
   return out;
+}
+
+// The passes of pt, bdpt and erpt in stats.json: whole passes, and for a render stopped inside a
+// pass the rows it did (in its checkpoint) and those its image shows (render/pass_film.h).
+void addPassStats(nlohmann::json& j, PassPoint end, PassPoint shown) {
+  j["spp"] = end.passes;
+  if (end.rows == 0) return;
+  j["rows_of_the_stopped_pass"] = end.rows;
+  j["image_rows_of_the_stopped_pass"] = shown.rows;
+}
+
+// The closing line's words for a render stopped inside a pass ("" otherwise).
+std::string inPassNote(PassPoint end, PassPoint shown) {
+  if (end.rows == 0) return "";
+  return " and " + std::to_string(end.rows) + " rows of the next" +
+         (shown.rows == end.rows ? "" : " (not in the image: its samples reach rows not done)");
 }
 
 // The images and the stats (with the wall time added). Root only.
@@ -160,10 +183,10 @@ Image withDirect(Image image, const Image& direct) {
   return image;
 }
 
-Gathered gatherAfterRender(Clock::time_point renderStart, const Renderer& renderer, Film& film) {
+Gathered gatherAfterRender(Clock::time_point renderStart, const Renderer& renderer, Film& film, bool reduceFilm = true) {
   Gathered g;
   g.renderSeconds = allreduceMax(since(renderStart));
-  reduceSumToRoot(film.data());
+  if (reduceFilm) reduceSumToRoot(film.data());
   g.rays = allreduceSum(renderer.rays());
   g.dropped = allreduceSum(film.droppedSamples());
   g.droppedPerRank = allgather(double(film.droppedSamples()));
@@ -360,22 +383,20 @@ void finishInThePass(const Session& session, const Renderer& renderer, const Ren
 // erpt: its image (with the proposal filter, if asked) and counters in stats.json.
 void renderErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, Clock::time_point wallStart,
                 const CheckpointPlan& plan, const Resumed* resumed) {
-  Film film(settings.width, settings.height);
+  PassFilm film = erptFilm(settings);
   const auto renderStart = Clock::now();
   int snapshots = 0;
   const ErptOutcome o = runErpt(session, renderer, settings, film, [&](const Image& image) {
     writeImages(settings, image);
     ++snapshots;
   }, plan, resumed);
-  const Gathered g = gatherAfterRender(renderStart, renderer, film);
+  const Gathered g = gatherAfterRender(renderStart, renderer, film.live(), false);
   if (!session.isRoot()) return;
-  Image image = Renderer::resolve(film, film.data(), o.end.passes, o.end.rows);
-  if (!o.proposals.empty()) applyProposalFilter(image, o.proposals);
+  const Image& image = o.image;
   nlohmann::json j = commonStats(settings, session, g, image);
   addMutationRates(j, o.counters.mutations, g, session.size(),
                    resumed ? resumed->progress.at("mutations").get<uint64_t>() : 0);
-  j["spp"] = o.end.passes;
-  if (o.end.rows > 0) j["rows_of_the_stopped_pass"] = o.end.rows;
+  addPassStats(j, o.end, film.shown(o.end));
   j["snapshots"] = snapshots;
   j["seeds"] = o.counters.seeds;
   j["chains"] = o.counters.chains;
@@ -384,26 +405,29 @@ void renderErpt(const Session& session, Renderer& renderer, const RenderSettings
   j["normaliser"] = o.normaliser;
   if (resumed) j["resumed_from"] = {{"checkpoint", resumed->file}, {"progress", resumed->progress}};
   writeOutputs(settings, image, j, wallStart);
-  std::fprintf(stderr, "relt: %llu seeds, %llu chains, %llu mutations, %.2f s; wrote %s\n",
+  std::fprintf(stderr, "relt: %d seeds per pixel%s, %llu seeds, %llu chains, %llu mutations, %.2f s; wrote %s\n",
+               o.end.passes, inPassNote(o.end, film.shown(o.end)).c_str(),
                static_cast<unsigned long long>(o.counters.seeds), static_cast<unsigned long long>(o.counters.chains),
                static_cast<unsigned long long>(o.counters.mutations), g.renderSeconds, filesWritten(settings).c_str());
 }
 
-// pt and bdpt: a checkpoint is the film and where the passes got to (pass k's samples depend on k only).
+// pt and bdpt: a checkpoint is the film and where the passes got to (pass k's samples depend on k
+// only), and inside a pass for bdpt also the film of the whole passes (render/pass_film.h).
 void renderPasses(const Session& session, Renderer& renderer, const RenderSettings& settings,
                   Clock::time_point wallStart, const CheckpointPlan& plan, const Resumed* resumed) {
-  Film film(settings.width, settings.height);
+  PassFilm film(settings.width, settings.height, samplesStayInTheirRow(settings.integrator));
   PassStart start;
   uint64_t earlierSamples = 0;
   if (resumed) {
-    resumed->restoreFilms({&film, 1});
     start = passStartOf(resumed->progress);
+    resumed->restoreFilms(film.checkpointFilms(start.at));
+    film.restored(start.at);
     earlierSamples = resumed->progress.at("samples").get<uint64_t>();
   }
   const auto renderStart = Clock::now();
   int snapshots = 0;
   PassHooks hooks;
-  hooks.renderUnit = [&](uint64_t pass, int row) { renderer.renderRow(pass, row, film); };
+  hooks.renderUnit = [&](uint64_t pass, int row) { renderer.renderRow(pass, row, film.live()); };
   hooks.rate = [&](double elapsed) { return double(renderer.samples()) * session.size() / std::max(elapsed, 1e-9); };
   hooks.snapshot = [&](PassPoint at) {
     const Image image = reducedPassImage(session, film, at);
@@ -414,27 +438,25 @@ void renderPasses(const Session& session, Renderer& renderer, const RenderSettin
     if (!checkpointNow(plan, elapsed, lastCheckpoint, more, save)) return;
     nlohmann::json progress = passProgress(at, elapsed);
     progress["samples"] = earlierSamples + allreduceSum(renderer.samples());
-    saveCheckpoint(plan, integratorName(settings.integrator), progress, {&film, 1}, {});
+    saveCheckpoint(plan, integratorName(settings.integrator), progress, film.checkpointFilms(at), {});
   };
-  const PassPoint end = runPasses(session, settings, hooks, start);
-  const int passes = end.passes;
+  const PassPoint end = runPasses(session, settings, film, hooks, start);
   const uint64_t samplesNow = allreduceSum(renderer.samples()), samples = earlierSamples + samplesNow;
-  const Gathered g = gatherAfterRender(renderStart, renderer, film);
+  const Image image = reducedPassImage(session, film, end);
+  const Gathered g = gatherAfterRender(renderStart, renderer, film.live(), false);
   if (!session.isRoot()) return;
 
-  const Image image = Renderer::resolve(film, film.data(), end.passes, end.rows);
   nlohmann::json j = commonStats(settings, session, g, image);
-  j["spp"] = passes;
-  if (end.rows > 0) j["rows_of_the_stopped_pass"] = end.rows;
+  addPassStats(j, end, film.shown(end));
   j["snapshots"] = snapshots;
   j["samples"] = samples;
   j["samples_per_second"] = samplesNow / std::max(g.renderSeconds, 1e-9);
   j["samples_per_second_per_rank"] = samplesNow / std::max(g.renderSeconds, 1e-9) / session.size();
   if (resumed) j["resumed_from"] = {{"checkpoint", resumed->file}, {"progress", resumed->progress}};
   writeOutputs(settings, image, j, wallStart);
-  std::fprintf(stderr, "relt: %d spp, %.2f s, %.3f M samples/s, %.2f M rays/s; wrote %s\n", passes,
-               g.renderSeconds, samplesNow / std::max(g.renderSeconds, 1e-9) * 1e-6,
-               g.rays / std::max(g.renderSeconds, 1e-9) * 1e-6,
+  std::fprintf(stderr, "relt: %d spp%s, %.2f s, %.3f M samples/s, %.2f M rays/s; wrote %s\n", end.passes,
+               inPassNote(end, film.shown(end)).c_str(), g.renderSeconds,
+               samplesNow / std::max(g.renderSeconds, 1e-9) * 1e-6, g.rays / std::max(g.renderSeconds, 1e-9) * 1e-6,
                filesWritten(settings).c_str());
 }
 

@@ -110,7 +110,7 @@ Image Renderer::resolve(const Film& film, const std::vector<double>& sums, int p
   Image image = resolve(film, sums, double(passes));
   const size_t row = size_t(3) * film.width();
   for (size_t i = 0; i < row * size_t(std::clamp(rowsAhead, 0, film.height())); ++i)
-    image.rgb[i] = static_cast<float>(sums[i] / double(passes + 1));
+    image.rgb[i] = static_cast<float>(sums[i] * (1.0 / double(passes + 1)));  // as resolve(passes + 1) does
   return image;
 }
 
