@@ -7,7 +7,7 @@
 
 #include "core/error.h"
 #include "render/direct_pass.h"
-#include "render/schedule.h"
+#include "schedule/schedule.h"
 
 namespace relt::mpi {
 namespace {

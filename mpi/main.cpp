@@ -11,7 +11,7 @@
 #include "core/error.h"
 #include "image/compare.h"
 #include "image/image.h"
-#include "render/schedule.h"
+#include "schedule/schedule.h"
 #include "render_driver.h"
 #include "replica/permutation.h"
 #include "scene/gltf_loader.h"
@@ -249,6 +249,64 @@ void checkReplicaOptions(Options& o) {
     throw relt::InputError("", "--exchange", "permutation needs at most 12 levels (its cost is M 2^M)");
 }
 
+// relt compare: the figures as JSON on stdout, the signed difference and its magnitude if asked.
+int runCompare(const Options& o, bool root) {
+  const relt::Image a = relt::readExr(o.compareA), b = relt::readExr(o.compareB);
+  const relt::ImageComparison c = relt::compareImages(a, b, o.compareA, o.compareB);
+  if (!root) return 0;
+  std::printf("{\"rmse\": %.9g, \"rel_mse\": %.9g, \"mean\": %.9g, \"reference_mean\": %.9g}\n", c.rmse, c.relMse,
+              c.meanA, c.meanB);
+  const relt::Image d = relt::signedDifference(a, b);
+  if (!o.compareDiff.empty()) relt::writeExr(o.compareDiff, d);
+  if (!o.comparePng.empty()) {
+    relt::Image magnitude = d;
+    for (float& v : magnitude.rgb) v = std::abs(v);
+    relt::writePng(o.comparePng, magnitude, 3.0f);
+  }
+  return 0;
+}
+
+// relt average: the pixel-by-pixel mean of the inputs.
+int runAverage(const Options& o, bool root) {
+  std::vector<relt::Image> images;
+  for (const std::string& path : o.averageInputs) images.push_back(relt::readExr(path));
+  const relt::Image mean = relt::averageImages(images, o.averageInputs);
+  if (root) {
+    relt::writeExr(o.averageOutput, mean);
+    if (!o.averagePng.empty()) relt::writePng(o.averagePng, mean, 0.0f);
+  }
+  return 0;
+}
+
+// relt info: the summary; a valid file that cannot be rendered is still exit 2.
+int runInfo(const Options& o, bool root) {
+  const relt::Scene scene = relt::loadGltf(o.infoScene);
+  if (root) std::cout << relt::summarizeScene(scene) << std::flush;
+  relt::checkRenderable(scene);
+  return 0;
+}
+
+// The integrator named by --integrator, and the options refused for it.
+void checkRenderOptions(Options& o) {
+  o.render.integrator = o.integrator == "pt"       ? relt::Integrator::PathTracing
+                        : o.integrator == "bdpt"   ? relt::Integrator::Bdpt
+                        : o.integrator == "pssmlt" ? relt::Integrator::Pssmlt
+                        : o.integrator == "mmlt"   ? relt::Integrator::Mmlt
+                        : o.integrator == "relt"   ? relt::Integrator::Relt
+                                                   : relt::Integrator::Erpt;
+  const bool chains = relt::isMarkovChain(o.render.integrator);
+  if (chains && o.render.spp) throw relt::InputError("", "--spp", o.integrator + " takes --mutations-per-pixel");
+  if (!chains && o.render.mutationsPerPixel)
+    throw relt::InputError("", "--mutations-per-pixel", "only for the Markov-chain integrators (pssmlt, mmlt, relt)");
+  if (o.render.smallStepMin >= o.render.smallStepMax)
+    throw relt::InputError("", "--small-step-min", "must be smaller than --small-step-max");
+  o.render.directSpp = o.directSpp == "auto" ? relt::kDirectSppAuto : std::stoi(o.directSpp);
+  if (o.render.directSpp > 0 && !relt::directEmissionApart(o.render))
+    throw relt::InputError("", "--direct-emission-spp", "only for pssmlt and relt");
+  if (o.render.integrator != relt::Integrator::Erpt && (o.render.erptMaxConsecutive > 0 || o.render.erptProposalFilter))
+    throw relt::InputError("", "--erpt-max-consecutive/--erpt-proposal-filter", "only for erpt");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -293,55 +351,10 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (*compare) {
-      const relt::Image a = relt::readExr(o.compareA), b = relt::readExr(o.compareB);
-      const relt::ImageComparison c = relt::compareImages(a, b, o.compareA, o.compareB);
-      if (root) {
-        std::printf("{\"rmse\": %.9g, \"rel_mse\": %.9g, \"mean\": %.9g, \"reference_mean\": %.9g}\n", c.rmse,
-                    c.relMse, c.meanA, c.meanB);
-        const relt::Image d = relt::signedDifference(a, b);
-        if (!o.compareDiff.empty()) relt::writeExr(o.compareDiff, d);
-        if (!o.comparePng.empty()) {
-          relt::Image magnitude = d;
-          for (float& v : magnitude.rgb) v = std::abs(v);
-          relt::writePng(o.comparePng, magnitude, 3.0f);
-        }
-      }
-      return 0;
-    }
-    if (*average) {
-      std::vector<relt::Image> images;
-      for (const std::string& path : o.averageInputs) images.push_back(relt::readExr(path));
-      const relt::Image mean = relt::averageImages(images, o.averageInputs);
-      if (root) {
-        relt::writeExr(o.averageOutput, mean);
-        if (!o.averagePng.empty()) relt::writePng(o.averagePng, mean, 0.0f);
-      }
-      return 0;
-    }
-    if (*info) {
-      const relt::Scene scene = relt::loadGltf(o.infoScene);
-      if (root) std::cout << relt::summarizeScene(scene) << std::flush;
-      relt::checkRenderable(scene);  // a valid file that cannot be rendered is still exit 2
-      return 0;
-    }
-    o.render.integrator = o.integrator == "pt"       ? relt::Integrator::PathTracing
-                          : o.integrator == "bdpt"   ? relt::Integrator::Bdpt
-                          : o.integrator == "pssmlt" ? relt::Integrator::Pssmlt
-                          : o.integrator == "mmlt"   ? relt::Integrator::Mmlt
-                          : o.integrator == "relt"   ? relt::Integrator::Relt
-                                                     : relt::Integrator::Erpt;
-    const bool chains = relt::isMarkovChain(o.render.integrator);
-    if (chains && o.render.spp) throw relt::InputError("", "--spp", o.integrator + " takes --mutations-per-pixel");
-    if (!chains && o.render.mutationsPerPixel)
-      throw relt::InputError("", "--mutations-per-pixel", "only for the Markov-chain integrators (pssmlt, mmlt, relt)");
-    if (o.render.smallStepMin >= o.render.smallStepMax)
-      throw relt::InputError("", "--small-step-min", "must be smaller than --small-step-max");
-    o.render.directSpp = o.directSpp == "auto" ? relt::kDirectSppAuto : std::stoi(o.directSpp);
-    if (o.render.directSpp > 0 && !relt::directEmissionApart(o.render))
-      throw relt::InputError("", "--direct-emission-spp", "only for pssmlt and relt");
-    if (o.render.integrator != relt::Integrator::Erpt && (o.render.erptMaxConsecutive > 0 || o.render.erptProposalFilter))
-      throw relt::InputError("", "--erpt-max-consecutive/--erpt-proposal-filter", "only for erpt");
+    if (*compare) return runCompare(o, root);
+    if (*average) return runAverage(o, root);
+    if (*info) return runInfo(o, root);
+    checkRenderOptions(o);
     checkOutputNames(o.render);
     checkReplicaOptions(o);
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;

@@ -8,7 +8,7 @@
 #include <optional>
 
 #include "mcmc/round_schedule.h"
-#include "render/pace.h"
+#include "schedule/pace.h"
 #include "render/renderer.h"
 
 namespace relt::mpi {

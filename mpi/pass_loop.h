@@ -1,7 +1,7 @@
 #pragma once
 // The pass loop of the per-pixel integrators (pt, bdpt, erpt): pass k renders the work units
 // (k, row) this rank owns; --spp N runs N passes, --time decides collectively after each pass.
-// A pass is taken in chunks of rows (render/schedule.h, nextPassChunk), the ranks agreeing on the
+// A pass is taken in chunks of rows (schedule/schedule.h, nextPassChunk), the ranks agreeing on the
 // elapsed time and on stop and save requests after each, so a request waits about 0.1 s however
 // long a pass takes; a render stopped inside a pass keeps the rows it did (its image shows what
 // render/pass_film.h says).
@@ -14,7 +14,7 @@
 #include "film/film.h"
 #include "image/image.h"
 #include "render/pass_film.h"
-#include "render/schedule.h"
+#include "schedule/schedule.h"
 #include "render/settings.h"
 
 namespace relt::mpi {

@@ -12,8 +12,8 @@
 #include "core/words.h"
 #include "mcmc/chain_pool.h"
 #include "mcmc/round_schedule.h"
-#include "render/pace.h"
-#include "render/schedule.h"
+#include "schedule/pace.h"
+#include "schedule/schedule.h"
 
 namespace relt::mpi {
 namespace {

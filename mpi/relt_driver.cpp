@@ -16,7 +16,7 @@
 #include "request_channel.h"
 #include "replica/round_loop.h"
 #include "replica/replica_schedule.h"
-#include "render/schedule.h"
+#include "schedule/schedule.h"
 
 namespace relt::mpi {
 namespace {
@@ -176,6 +176,19 @@ ReltOutcome outcomeOf(const Session& session, const ReplicaPool& pool, const Rep
   return out;
 }
 
+// Bootstrap: sample i on rank i mod P; every rank then holds every sample's features. A resumed
+// render takes what it needs of it from the checkpoint instead.
+void bootstrapPool(std::optional<ReplicaPool>& pool, PssEvaluator& eval, const ReplicaSettings& rs, uint64_t seed,
+                   const Session& session, const Resumed* checkpoint) {
+  if (checkpoint) {
+    pool.emplace(eval, rs, seed, checkpointMeanTarget(*checkpoint), session.rank(), session.size());
+    return;
+  }
+  std::vector<double> features = bootstrapFeatures(eval, rs.family, seed, rs.bootstrap, session.rank(), session.size());
+  allreduceSum(features);
+  pool.emplace(eval, rs, seed, features, session.rank(), session.size());
+}
+
 }  // namespace
 
 ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSettings& settings,
@@ -184,17 +197,9 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   const ReplicaSettings rs = effectiveReplicaSettings(settings);
   PssEvaluator eval(renderer.context(), settings.width, settings.height);
 
-  // Bootstrap: sample i on rank i mod P; every rank then holds every sample's features. A resumed
-  // render takes what it needs of it from the checkpoint instead.
   const auto bootstrapStart = Clock::now();
   std::optional<ReplicaPool> pooled;
-  if (checkpoint) {
-    pooled.emplace(eval, rs, settings.seed, checkpointMeanTarget(*checkpoint), session.rank(), session.size());
-  } else {
-    std::vector<double> features = bootstrapFeatures(eval, rs.family, settings.seed, rs.bootstrap, session.rank(), session.size());
-    allreduceSum(features);
-    pooled.emplace(eval, rs, settings.seed, features, session.rank(), session.size());
-  }
+  bootstrapPool(pooled, eval, rs, settings.seed, session, checkpoint);
   ReplicaPool& pool = *pooled;
   const double bootstrapSeconds = allreduceMax(since(bootstrapStart));
   films.assign(rs.perLevel ? size_t(pool.levels()) : 1, Film(settings.width, settings.height));

@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "mcmc/pssmlt.h"
-#include "render/schedule.h"
+#include "schedule/schedule.h"
 
 namespace relt {
 

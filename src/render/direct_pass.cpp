@@ -4,7 +4,7 @@
 #include <bit>
 #include <chrono>
 
-#include "render/schedule.h"
+#include "schedule/schedule.h"
 
 namespace relt {
 

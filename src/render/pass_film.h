@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "film/film.h"
-#include "render/schedule.h"
+#include "schedule/schedule.h"
 #include "render/settings.h"
 
 namespace relt {

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "render/schedule.h"
+#include "schedule/schedule.h"
 
 namespace relt {
 

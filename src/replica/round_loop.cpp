@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "render/pace.h"
+#include "schedule/pace.h"
 
 namespace relt {
 namespace {

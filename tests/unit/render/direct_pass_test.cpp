@@ -1,5 +1,5 @@
 // The direct-emission pass of pssmlt and relt: its size on auto, the probe that drops it when no
-// emitter is in view, and the doublings of a timed render (render/direct_pass.h, render/schedule.h).
+// emitter is in view, and the doublings of a timed render (render/direct_pass.h, schedule/schedule.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "render/direct_pass.h"
-#include "render/schedule.h"
+#include "schedule/schedule.h"
 #include "scene/gltf_loader.h"
 #include "test_support.h"
 #include "../scene/gltf_test_support.h"

@@ -1,7 +1,7 @@
 // The expected duration of a timed render's next pass or round.
 #include <gtest/gtest.h>
 
-#include "render/pace.h"
+#include "schedule/pace.h"
 
 using namespace relt;
 

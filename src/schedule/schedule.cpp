@@ -1,4 +1,4 @@
-#include "render/schedule.h"
+#include "schedule/schedule.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "render/renderer.h"
-#include "render/schedule.h"
+#include "schedule/schedule.h"
 
 using namespace relt;
 
