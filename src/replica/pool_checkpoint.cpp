@@ -41,6 +41,16 @@ ExchangeTally readTally(WordReader& in, int m) {
   return t;
 }
 
+// The chains of one old rank's part, each into its (still empty) record by global id.
+void readChainRecords(WordReader& in, std::vector<std::vector<uint64_t>>& records) {
+  for (uint64_t n = in.u64(); n > 0; --n) {
+    const uint64_t c = in.u64();
+    if (c >= records.size() || !records[c].empty()) throw std::runtime_error("the checkpoint's chains are not this render's");
+    records[c] = in.block();
+    if (records[c].empty()) throw std::runtime_error("truncated replica-chain state");
+  }
+}
+
 }  // namespace
 
 double ReplicaPool::checkpointMeanTarget(const std::vector<std::vector<uint64_t>>& parts) {
@@ -146,12 +156,7 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
         p.epoch = in.u64();
       }
     }
-    for (uint64_t n = in.u64(); n > 0; --n) {
-      const uint64_t c = in.u64();
-      if (c >= records.size() || !records[c].empty()) throw std::runtime_error("the checkpoint's chains are not this render's");
-      records[c] = in.block();
-      if (records[c].empty()) throw std::runtime_error("truncated replica-chain state");
-    }
+    readChainRecords(in, records);
     if (!in.done()) throw std::runtime_error("the checkpoint's replica state has trailing data");
   }
   for (const std::vector<uint64_t>& rec : records)
@@ -169,11 +174,16 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
     trips_.addEarlier(trips);
   }
   if (rank_ == 0) departed_ = counters;  // the counters of everything before, counted once
-  // The rounds not read back: each rank's own shares with the same rank count, otherwise all on
-  // the root (the sums are the same up to rounding). At the checkpoint (roundDone) group 0 had just
-  // finished its round and every other group's last round was still being gathered; the rounds
-  // gathered before are held (spread) or still travelling (local decisions: posted again).
-  const bool same = parts.size() == size_t(ranks_);
+  restorePendingRounds(posted);
+}
+
+// The rounds not read back: each rank's own shares with the same rank count, otherwise all on
+// the root (the sums are the same up to rounding). At the checkpoint (roundDone) group 0 had just
+// finished its round and every other group's last round was still being gathered; the rounds
+// gathered before are held (spread) or still travelling (local decisions: posted again).
+void ReplicaPool::restorePendingRounds(const std::vector<std::vector<std::vector<PostedRound>>>& posted) {
+  const int m = levels();
+  const bool same = posted.size() == size_t(ranks_);
   for (int g = 0; g < groups(); ++g) {
     const std::vector<PostedRound>& rounds = posted[0][size_t(g)];
     ungathered_[size_t(g)] = g > 0 && !rounds.empty() ? 1 : 0;
@@ -182,7 +192,7 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
     for (size_t i = 0; i < rounds.size(); ++i) {
       // Every rank's share (rank order), as its message's tail would have carried it.
       std::vector<LargeStepSums> shares(size_t(ranks_), LargeStepSums{m});
-      for (size_t r = 0; r < parts.size(); ++r) {
+      for (size_t r = 0; r < posted.size(); ++r) {
         const LargeStepSums& from = posted[r][size_t(g)][i].large;
         LargeStepSums& into = shares[same ? r : 0];
         for (int k = 0; k < m; ++k) into.sum[size_t(k)] += from.sum[size_t(k)];

@@ -195,6 +195,8 @@ class ReplicaPool {
     uint64_t placement = 0;  // the group's placement version it was stepped in
   };
   std::vector<std::deque<PostedRound>> posted_;  // per group: rounds posted, not read back, oldest first
+  // restore(): the rounds not read back at the checkpoint, posted[r][g] per old rank r and group g.
+  void restorePendingRounds(const std::vector<std::vector<std::vector<PostedRound>>>& posted);
   // Spread: per group, every rank's message tail of the rounds gathered but not read back yet.
   std::vector<std::deque<std::vector<std::vector<double>>>> held_;
   double agreedElapsed_ = 0.0;  // the largest elapsed time read back so far

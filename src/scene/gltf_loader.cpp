@@ -427,6 +427,69 @@ std::string uniqueName(std::string name, const std::set<std::string>& taken) {
     if (!taken.count(name + "." + std::to_string(k))) return name + "." + std::to_string(k);
 }
 
+// Instancing multiplies triangles: refuses a scene that cannot fit before it is built.
+void checkInstancesFit(Context& ctx, const std::vector<Node>& nodes, const std::vector<PlacedNode>& placedNodes,
+                       const std::vector<std::vector<LocalPrimitive>>& localMeshes) {
+  uint64_t instancedTriangles = 0;
+  for (const PlacedNode& placed : placedNodes)
+    if (nodes[placed.node].mesh)
+      for (const LocalPrimitive& prim : localMeshes[*nodes[placed.node].mesh]) instancedTriangles += prim.triangles.size() / 3;
+  const uint64_t memory = physicalMemoryBytes();
+  if (instancedTriangles > UINT32_MAX || !fitsInMemory(double(instancedTriangles) * kBytesPerTriangle, memory))
+    ctx.fail("nodes", "the scene instances " + std::to_string(instancedTriangles) + " triangles, about " +
+                          formatGiB(double(instancedTriangles) * kBytesPerTriangle) + " once loaded, more than fits in " +
+                          formatGiB(double(memory)) + " of memory");
+}
+
+// A node's camera into the scene: perspective ones only, named uniquely.
+void placeCamera(Context& ctx, const CameraDecl& decl, size_t index, const Node& node, const PlacedNode& placed,
+                 std::set<std::string>& cameraNames, Scene& scene) {
+  if (!decl.known) return;  // warned where the camera was read
+  if (!decl.perspective) {
+    ctx.warn(indexed("cameras", index) + " is orthographic: skipped (relt renders perspective cameras)");
+    return;
+  }
+  const std::string element = indexed("nodes", placed.node);
+  const std::optional<Mat3> frame = rigidFrame(placed.world);
+  if (!frame) ctx.fail(element, "the camera's transform is degenerate (zero scale)");
+  PerspectiveCamera cam;
+  const std::string base = !decl.name.empty()   ? decl.name
+                           : !node.name.empty() ? node.name
+                                                : "camera" + std::to_string(scene.cameras.size());
+  cam.name = uniqueName(base, cameraNames);
+  cameraNames.insert(cam.name);
+  cam.position = worldPosition(ctx, glm::dvec3(placed.world[3]), element, "its camera");
+  cam.toWorld = *frame;
+  cam.yfov = static_cast<float>(decl.yfov);
+  if (decl.aspect) cam.aspect = static_cast<float>(*decl.aspect);
+  scene.cameras.push_back(cam);
+}
+
+// A node's point or spot light into the scene (directional ones are not supported yet).
+void placeLight(Context& ctx, const LightDecl& decl, const Node& node, const PlacedNode& placed, Scene& scene) {
+  if (decl.type == "directional") {
+    ctx.warn("directional lights are not supported yet; ignored");
+    return;
+  }
+  if (decl.type != "point" && decl.type != "spot") return;
+  const std::string element = indexed("nodes", placed.node);
+  PunctualLight light;
+  light.name = !decl.name.empty()   ? decl.name
+               : !node.name.empty() ? node.name
+                                    : "light" + std::to_string(scene.punctualLights.size());
+  light.position = worldPosition(ctx, glm::dvec3(placed.world[3]), element, "its light");
+  light.intensity = decl.intensity;
+  if (decl.type == "spot") {
+    const glm::dvec3 axis = -glm::dvec3(placed.world[2]);  // lights shine down their local -Z
+    if (!(glm::length(axis) > 1e-12)) ctx.fail(element, "the spot light's transform is degenerate (zero scale)");
+    light.direction = Vec3(glm::normalize(axis));
+    light.spot = true;
+    light.cosInner = static_cast<float>(std::cos(decl.inner));
+    light.cosOuter = static_cast<float>(std::cos(decl.outer));
+  }
+  scene.punctualLights.push_back(light);
+}
+
 }  // namespace
 
 Scene loadGltf(const std::string& path) {
@@ -471,17 +534,8 @@ Scene loadGltf(const std::string& path) {
           readPrimitive(ctx, reader, meshes[m][p], indexed("meshes", m) + "." + indexed("primitives", p)));
   buffers.clear();
 
-  // Instancing multiplies triangles: refuse a scene that cannot fit before building it.
   const std::vector<PlacedNode> placedNodes = placeNodes(nodes, choice.roots);
-  uint64_t instancedTriangles = 0;
-  for (const PlacedNode& placed : placedNodes)
-    if (nodes[placed.node].mesh)
-      for (const LocalPrimitive& prim : localMeshes[*nodes[placed.node].mesh]) instancedTriangles += prim.triangles.size() / 3;
-  const uint64_t memory = physicalMemoryBytes();
-  if (instancedTriangles > UINT32_MAX || !fitsInMemory(double(instancedTriangles) * kBytesPerTriangle, memory))
-    ctx.fail("nodes", "the scene instances " + std::to_string(instancedTriangles) + " triangles, about " +
-                          formatGiB(double(instancedTriangles) * kBytesPerTriangle) + " once loaded, more than fits in " +
-                          formatGiB(double(memory)) + " of memory");
+  checkInstancesFit(ctx, nodes, placedNodes, localMeshes);
 
   scene.materials = std::move(materials);
   std::optional<uint32_t> defaultIndex;
@@ -504,50 +558,8 @@ Scene loadGltf(const std::string& path) {
         instancePrimitive(ctx, prim, placed.world, material, element, &scene);
       }
     }
-    if (node.camera) {
-      const CameraDecl& decl = cameras[*node.camera];
-      if (!decl.known) {
-        // warned where the camera was read
-      } else if (!decl.perspective) {
-        ctx.warn(indexed("cameras", *node.camera) + " is orthographic: skipped (relt renders perspective cameras)");
-      } else {
-        const std::optional<Mat3> frame = rigidFrame(placed.world);
-        if (!frame) ctx.fail(element, "the camera's transform is degenerate (zero scale)");
-        PerspectiveCamera cam;
-        const std::string base = !decl.name.empty()   ? decl.name
-                                 : !node.name.empty() ? node.name
-                                                      : "camera" + std::to_string(scene.cameras.size());
-        cam.name = uniqueName(base, cameraNames);
-        cameraNames.insert(cam.name);
-        cam.position = worldPosition(ctx, glm::dvec3(placed.world[3]), element, "its camera");
-        cam.toWorld = *frame;
-        cam.yfov = static_cast<float>(decl.yfov);
-        if (decl.aspect) cam.aspect = static_cast<float>(*decl.aspect);
-        scene.cameras.push_back(cam);
-      }
-    }
-    if (node.light) {
-      const LightDecl& decl = lights[*node.light];
-      if (decl.type == "directional") {
-        ctx.warn("directional lights are not supported yet; ignored");
-      } else if (decl.type == "point" || decl.type == "spot") {
-        PunctualLight light;
-        light.name = !decl.name.empty()   ? decl.name
-                     : !node.name.empty() ? node.name
-                                          : "light" + std::to_string(scene.punctualLights.size());
-        light.position = worldPosition(ctx, glm::dvec3(placed.world[3]), element, "its light");
-        light.intensity = decl.intensity;
-        if (decl.type == "spot") {
-          const glm::dvec3 axis = -glm::dvec3(placed.world[2]);  // lights shine down their local -Z
-          if (!(glm::length(axis) > 1e-12)) ctx.fail(element, "the spot light's transform is degenerate (zero scale)");
-          light.direction = Vec3(glm::normalize(axis));
-          light.spot = true;
-          light.cosInner = static_cast<float>(std::cos(decl.inner));
-          light.cosOuter = static_cast<float>(std::cos(decl.outer));
-        }
-        scene.punctualLights.push_back(light);
-      }
-    }
+    if (node.camera) placeCamera(ctx, cameras[*node.camera], *node.camera, node, placed, cameraNames, scene);
+    if (node.light) placeLight(ctx, lights[*node.light], node, placed, scene);
   }
   scene.warnings = ctx.takeWarnings();
   return scene;
