@@ -22,7 +22,7 @@ ErptCounters sumOverRanks(const ErptCounters& local) {
 
 // The checkpoint's root part at `at`: the normaliser (a resume does not run the bootstrap again),
 // the counters summed over ranks and the proposal tallies, reduced here; other ranks' parts are empty.
-std::vector<uint64_t> checkpointPart(const Session& session, PassFilm& film, PassPoint at, double normaliser,
+std::vector<uint64_t> checkpointPart(const Session& session, const PassFilm& film, PassPoint at, double normaliser,
                                      const ErptCounters& c) {
   std::vector<std::vector<double>> tallies;
   for (const std::vector<double>& t : film.checkpointTallies(at)) {

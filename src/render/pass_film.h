@@ -45,6 +45,9 @@ class PassFilm {
   std::span<Film> checkpointFilms(PassPoint at) { return {films_.data(), filmsKept(at)}; }
   // The tallies a checkpoint at `at` holds, likewise.
   std::span<std::vector<double>> checkpointTallies(PassPoint at) { return {tallies_.data(), filmsKept(at)}; }
+  std::span<const std::vector<double>> checkpointTallies(PassPoint at) const {
+    return {tallies_.data(), filmsKept(at)};
+  }
   // After a checkpoint at `at` was restored into checkpointFilms(at) and checkpointTallies(at).
   void restored(PassPoint at);
 
