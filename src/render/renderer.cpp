@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "camera/film_position.h"
 #include "core/error.h"
 #include "core/low_discrepancy.h"
 #include "core/memory.h"
@@ -55,7 +56,7 @@ void Renderer::renderRow(uint64_t sampleIndex, int row, Film& film) {
       const uint64_t pixel = static_cast<uint64_t>(row) * w + (x0 + i);
       sources_[i].reset(hashKey(settings_.seed, pixel, sampleIndex));
       const Vec2 jitter = sources_[i].next2(SampleStream::Camera);
-      pos[i] = Vec2(x0 + i + jitter.x, row + jitter.y);
+      pos[i] = positionInPixel(x0 + i, row, jitter);
       samples_[i].clear();
     }
     if (settings_.integrator == Integrator::PathTracing) {
@@ -93,7 +94,7 @@ void Renderer::renderDirect(int firstRow, int rowStride, Film& film, uint32_t be
         source.reset(hashKey(settings_.seed, stream, pixel, static_cast<uint64_t>(k)));
         const Vec2 offset = shiftedSobol02(k, sx, sy);
         sample.clear();
-        tracePath(direct, Vec2(x + offset.x, row + offset.y), source, sample);
+        tracePath(direct, positionInPixel(x, row, offset), source, sample);
         film.addSample(sample);
       }
     }
