@@ -136,7 +136,7 @@ Vec3 RayTracer::interpolatedNormal(const Triangle& tri, float b0, float b1, floa
 }
 
 bool RayTracer::intersect(const Ray& ray, SurfacePoint& hit, float& distance) const {
-  ++rays_;
+  rays_.add(1);
   if (!traceableRay(ray.origin, ray.dir) || std::isnan(ray.tMax)) return false;
   RTCIntersectContext ctx;
   rtcInitIntersectContext(&ctx);
@@ -184,7 +184,7 @@ bool RayTracer::occludedToPoint(const Vec3& from, const Vec3& fromNg, const Vec3
 }
 
 bool RayTracer::occluded(const Segment& seg) const {
-  ++rays_;
+  rays_.add(1);
   ShadowRay sr;
   bool blocked;
   if (!shadowRay(seg, sr, blocked)) return blocked;
@@ -250,7 +250,7 @@ void RayTracer::intersectPackets(const Ray* rays, int n, SurfacePoint* hits, flo
       valid[i] = -1;
       any = true;
     }
-    rays_ += static_cast<uint64_t>(m);
+    rays_.add(static_cast<uint64_t>(m));
     if (!any) continue;
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
@@ -275,7 +275,7 @@ void RayTracer::occludedPackets(const Segment* segs, int n, bool* blocked) const
     for (int i = 0; i < m; ++i) {
       blocked[base + i] = false;
       if (!segs[base + i].active) continue;
-      ++rays_;
+      rays_.add(1);
       ShadowRay sr;
       if (!shadowRay(segs[base + i], sr, blocked[base + i])) continue;
       setLane(r, i, sr.o, sr.d, sr.tfar);

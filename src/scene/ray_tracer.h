@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/math.h"
+#include "parallel/workers.h"
 #include "scene/quad_pairs.h"
 #include "scene/scene.h"
 
@@ -91,7 +92,7 @@ class RayTracer {
     return sp;
   }
 
-  uint64_t rayCount() const { return rays_; }
+  uint64_t rayCount() const { return rays_.total(); }
 
   struct BarycentricAxes {
     Vec3 b1, b2;
@@ -123,7 +124,7 @@ class RayTracer {
   std::vector<Vec3> flatNs_;  // unit shading normal of triangles whose vertex normals agree, else 0
   int packetWidth_ = 1;  // widest ray packet the Embree build runs natively (16, 8, 4; 1: none)
   float epsilonFloor_ = 1.0f;  // offsets never shrink below this scale: max(1, 1 % of the scene's extent)
-  mutable uint64_t rays_ = 0;
+  mutable PerWorkerCount rays_;  // traced from a rank's worker threads at once
 };
 
 }  // namespace relt

@@ -1,0 +1,49 @@
+#pragma once
+// Threads inside a rank: one call run by N workers at once, each knowing its index, and counters
+// each worker adds to without sharing a cache line with the others.
+#include <array>
+#include <cstdint>
+#include <functional>
+
+namespace relt {
+
+// Most workers a rank runs (--threads); counters keep a slot for each.
+constexpr int kMaxWorkers = 256;
+
+// The cores this process may run on: its CPU affinity (1 under mpirun --bind-to core, every core
+// for a plain run), at least 1 and at most kMaxWorkers.
+int coresAvailable();
+
+// The cores of the machine (online), at least 1.
+int coresOnline();
+
+// --threads on auto: the cores this rank may use. A launcher that bound the rank (its affinity is
+// narrower than the machine, e.g. mpirun --bind-to core) gave it `affinity` cores; an unbound rank
+// shares the machine with the other `ranksOnNode` ranks there, so takes its share of it.
+int defaultThreads(int affinity, int online, int ranksOnNode);
+
+// The index of the worker the calling thread is: 0 outside runOnWorkers.
+int currentWorker();
+
+// Runs work(w) for w = 0 .. workers - 1 at once (w = 0 on the calling thread) and returns when all
+// have ended; an exception thrown by a worker is rethrown then (the lowest worker's if several).
+void runOnWorkers(int workers, const std::function<void(int worker)>& work);
+
+// A count every worker adds to at full speed (a slot per worker), read as the total.
+class PerWorkerCount {
+ public:
+  void add(uint64_t n) { slots_[currentWorker()].n += n; }
+  uint64_t total() const {
+    uint64_t sum = 0;
+    for (const Slot& s : slots_) sum += s.n;
+    return sum;
+  }
+
+ private:
+  struct alignas(64) Slot {
+    uint64_t n = 0;
+  };
+  std::array<Slot, kMaxWorkers> slots_{};
+};
+
+}  // namespace relt
