@@ -125,7 +125,7 @@ Checkpoint readCheckpoint(const std::string& dir) {
 nlohmann::json imageIdentity(const RenderSettings& settings, const std::string& digest) {
   nlohmann::json j = settings.toJson();
   for (const char* key : {"scene", "output", "png", "spp", "time", "mutations_per_pixel", "snapshot_every",
-                          "placement", "balance_window", "exposure"})
+                          "placement", "balance_window", "exposure", "threads"})
     j.erase(key);
   j["scene_digest"] = digest;
   j["format"] = kFormat;

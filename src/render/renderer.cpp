@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/low_discrepancy.h"
 #include "core/memory.h"
+#include "parallel/workers.h"
 #include "path/path_tracer.h"
 #include "scene/scene_summary.h"
 
@@ -42,11 +43,23 @@ Renderer::Renderer(Scene scene, const RenderSettings& settings) : scene_(std::mo
   ps.heuristic = settings_.heuristic;
   if (directEmissionApart(settings_)) ps.minDepth = 2;  // renderDirect estimates the rest
   ctx_ = std::make_unique<PathContext>(PathContext{scene_, *tracer_, *lights_, *camera_, ps});
-  bdpt_ = std::make_unique<Bdpt>(*ctx_);
-  for (size_t i = 0; i < sources_.size(); ++i) sourcePointers_[i] = &sources_[i];
+  for (int w = 0; w < std::max(settings_.threads, 1); ++w) workers_.push_back(std::make_unique<RowWorker>(*ctx_));
+}
+
+Renderer::RowWorker::RowWorker(const PathContext& ctx) : bdpt(ctx) {
+  for (size_t i = 0; i < sources.size(); ++i) sourcePointers[i] = &sources[i];
+}
+
+uint64_t Renderer::samples() const {
+  uint64_t n = 0;
+  for (const auto& w : workers_) n += w->sampleCount;
+  return n;
 }
 
 void Renderer::renderRow(uint64_t sampleIndex, int row, Film& film) {
+  RowWorker& worker = *workers_.at(size_t(currentWorker()));
+  auto& sources = worker.sources;
+  auto& samples = worker.samples;
   const int w = settings_.width;
   constexpr int K = RayTracer::kPacketSize;
   for (int x0 = 0; x0 < w; x0 += K) {
@@ -54,19 +67,19 @@ void Renderer::renderRow(uint64_t sampleIndex, int row, Film& film) {
     Vec2 pos[K];
     for (int i = 0; i < m; ++i) {
       const uint64_t pixel = static_cast<uint64_t>(row) * w + (x0 + i);
-      sources_[i].reset(hashKey(settings_.seed, pixel, sampleIndex));
-      const Vec2 jitter = sources_[i].next2(SampleStream::Camera);
+      sources[i].reset(hashKey(settings_.seed, pixel, sampleIndex));
+      const Vec2 jitter = sources[i].next2(SampleStream::Camera);
       pos[i] = positionInPixel(x0 + i, row, jitter);
-      samples_[i].clear();
+      samples[i].clear();
     }
     if (settings_.integrator == Integrator::PathTracing) {
       // Neighbouring pixels together: their camera and first shadow rays trace as packets.
-      tracePaths(*ctx_, m, pos, sourcePointers_.data(), samples_.data());
+      tracePaths(*ctx_, m, pos, worker.sourcePointers.data(), samples.data());
     } else {
-      for (int i = 0; i < m; ++i) bdpt_->trace(pos[i], sources_[i], samples_[i]);
+      for (int i = 0; i < m; ++i) worker.bdpt.trace(pos[i], sources[i], samples[i]);
     }
-    for (int i = 0; i < m; ++i) film.addSample(samples_[i]);
-    sampleCount_ += static_cast<uint64_t>(m);
+    for (int i = 0; i < m; ++i) film.addSample(samples[i]);
+    worker.sampleCount += static_cast<uint64_t>(m);
   }
 }
 

@@ -27,7 +27,8 @@ class Renderer {
   const PathContext& context() const { return *ctx_; }
 
   // One unit of work: sample `sampleIndex` of every pixel of row `row`. Each pixel sample has its
-  // own random stream keyed by (seed, pixel, sample index).
+  // own random stream keyed by (seed, pixel, sample index). Worker threads of the rank
+  // (settings().threads, parallel/workers.h) may render rows at once, each into a film of its own.
   void renderRow(uint64_t sampleIndex, int row, Film& film);
   // The directly seen emission (paths of one segment) of rows firstRow, firstRow + rowStride, ...:
   // camera rays number begin .. end - 1 of every pixel, at the points of a shifted (0,2)-sequence,
@@ -39,7 +40,7 @@ class Renderer {
   // Only before any chain has stepped.
   void keepDirectEmissionInChains();
 
-  uint64_t samples() const { return sampleCount_; }
+  uint64_t samples() const;
   uint64_t rays() const { return tracer_->rayCount(); }
 
   // Film sums -> pixel values for `spp` samples per pixel.
@@ -54,12 +55,17 @@ class Renderer {
   std::unique_ptr<LightSampler> lights_;
   std::unique_ptr<Camera> camera_;
   std::unique_ptr<PathContext> ctx_;
-  std::unique_ptr<Bdpt> bdpt_;
-  // One batch of neighbouring pixels (traced together, see tracePaths).
-  std::array<IndependentSource, RayTracer::kPacketSize> sources_{};
-  std::array<SampleSource*, RayTracer::kPacketSize> sourcePointers_{};
-  std::array<PathSample, RayTracer::kPacketSize> samples_{};
-  uint64_t sampleCount_ = 0;
+  // What one worker thread's rows need of their own: a batch of neighbouring pixels (traced
+  // together, see tracePaths), bdpt's subpaths, and the samples it took.
+  struct RowWorker {
+    explicit RowWorker(const PathContext& ctx);
+    std::array<IndependentSource, RayTracer::kPacketSize> sources{};
+    std::array<SampleSource*, RayTracer::kPacketSize> sourcePointers{};
+    std::array<PathSample, RayTracer::kPacketSize> samples{};
+    Bdpt bdpt;
+    uint64_t sampleCount = 0;
+  };
+  std::vector<std::unique_ptr<RowWorker>> workers_;
   static constexpr uint64_t kDirectStream = 0xd12ec7;  // keeps renderDirect's streams apart
   static constexpr uint64_t kProbeStream = 0xd12ec8;   // and the probe's from those
 };

@@ -51,6 +51,7 @@ nlohmann::json RenderSettings::toJson() const {
   j["camera"] = camera;
   j["exposure"] = shortest(exposure);
   j["mis"] = heuristic == MisHeuristic::Power ? "power" : "balance";
+  j["threads"] = threads;
   if (integrator == Integrator::Erpt) {
     j["chain_length"] = chainLength;
     if (erptMaxConsecutive > 0) j["max_consecutive"] = erptMaxConsecutive;

@@ -36,6 +36,9 @@ struct RenderSettings {
   std::string camera;             // empty: first camera
   float exposure = 0.0f;
   MisHeuristic heuristic = MisHeuristic::Power;
+  // Worker threads of a rank (pt, bdpt, erpt; the chain integrators run one): the image does not
+  // depend on them.
+  int threads = 1;
   // Markov-chain integrators.
   std::optional<double> mutationsPerPixel;  // default 16
   int chains = 256;

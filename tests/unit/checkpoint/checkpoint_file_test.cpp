@@ -122,6 +122,7 @@ TEST(CheckpointFile, TheIdentityIgnoresBudgetsAndOutputsButNotWhatShapesTheImage
   b.mutationsPerPixel = 64;
   b.snapshotEvery = 10;
   b.replica.placement = Placement::Packed;
+  b.threads = 2;
   EXPECT_EQ(imageIdentity(a, "d1"), imageIdentity(b, "d1"));
   EXPECT_NO_THROW(checkSameRender(imageIdentity(a, "d1"), imageIdentity(b, "d1"), "f"));
   b.seed = 2;
