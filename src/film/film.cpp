@@ -1,5 +1,6 @@
 #include "film/film.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace relt {
@@ -28,6 +29,11 @@ void Film::addWeighted(const Film& other, double weight) {
   dropped_ += other.dropped_;
   if (weight == 0.0) return;
   for (size_t k = 0; k < rgb_.size() && k < other.rgb_.size(); ++k) rgb_[k] += weight * other.rgb_[k];
+}
+
+void Film::clear() {
+  std::fill(rgb_.begin(), rgb_.end(), 0.0);
+  dropped_ = 0;
 }
 
 }  // namespace relt

@@ -21,6 +21,8 @@ class Film {
   void addSplat(const Vec2& film, const Color& value, double weight);
   // Adds weight x another film's sums (same size) and its dropped-sample count.
   void addWeighted(const Film& other, double weight);
+  // Zero sums and no dropped samples, as new.
+  void clear();
 
   // Raw sums (r, g, b per pixel, row-major from the top), reduced across ranks by the MPI layer.
   std::vector<double>& data() { return rgb_; }

@@ -1,15 +1,30 @@
 #include "pass_film.h"
 
+#include <algorithm>
+
 namespace relt {
 
 bool samplesStayInTheirRow(Integrator integrator) { return integrator == Integrator::PathTracing; }
 
-PassFilm::PassFilm(int width, int height, bool rowsStandAlone, size_t tallySize)
+PassFilm::PassFilm(int width, int height, bool rowsStandAlone, size_t tallySize, int workers)
     : rowsStandAlone_(rowsStandAlone),
       films_(rowsStandAlone ? 1 : 2, Film(width, height)),
-      tallies_(rowsStandAlone ? 1 : 2, std::vector<double>(tallySize, 0.0)) {}
+      tallies_(rowsStandAlone ? 1 : 2, std::vector<double>(tallySize, 0.0)),
+      workerFilms_(size_t(std::max(workers, 1) - 1), Film(width, height)),
+      workerTallies_(workerFilms_.size(), std::vector<double>(tallySize, 0.0)) {}
+
+void PassFilm::gatherWorkers() {
+  for (size_t w = 0; w < workerFilms_.size(); ++w) {
+    films_[0].addWeighted(workerFilms_[w], 1.0);
+    workerFilms_[w].clear();
+    std::vector<double>& tally = workerTallies_[w];
+    for (size_t i = 0; i < tally.size(); ++i) tallies_[0][i] += tally[i];
+    std::fill(tally.begin(), tally.end(), 0.0);
+  }
+}
 
 void PassFilm::passEnded() {
+  gatherWorkers();
   if (rowsStandAlone_) return;
   films_[1] = films_[0];
   tallies_[1] = tallies_[0];

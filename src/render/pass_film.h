@@ -20,15 +20,27 @@ bool samplesStayInTheirRow(Integrator integrator);
 
 class PassFilm {
  public:
-  // `tallySize`: per-pixel counts kept beside the film (erpt's proposal filter), or 0.
-  PassFilm(int width, int height, bool rowsStandAlone, size_t tallySize = 0);
+  // `tallySize`: per-pixel counts kept beside the film (erpt's proposal filter), or 0; `workers`:
+  // the rank's worker threads, each rendering into sums of its own.
+  PassFilm(int width, int height, bool rowsStandAlone, size_t tallySize = 0, int workers = 1);
 
   Film& live() { return films_[0]; }
   const Film& live() const { return films_[0]; }
   std::vector<double>& tally() { return tallies_[0]; }
   const std::vector<double>& tally() const { return tallies_[0]; }
 
-  // At every pass end: the live sums become the whole passes' (a copy, where rows do not stand alone).
+  // The sums worker w adds to: the live ones for worker 0, its own for the others.
+  Film& workerFilm(int w) { return w == 0 ? films_[0] : workerFilms_[size_t(w - 1)]; }
+  std::vector<double>* workerTally(int w) {
+    std::vector<double>& t = w == 0 ? tallies_[0] : workerTallies_[size_t(w - 1)];
+    return t.empty() ? nullptr : &t;
+  }
+  // Adds the other workers' sums into the live ones and clears theirs: before the live sums are
+  // read (at pass ends, snapshots, checkpoints and the end).
+  void gatherWorkers();
+
+  // At every pass end: the workers' sums are gathered and the live sums become the whole passes'
+  // (a copy, where rows do not stand alone).
   void passEnded();
 
   // What an image at `at` shows: `at` where rows stand alone or at a pass end, else the whole passes.
@@ -58,6 +70,8 @@ class PassFilm {
   bool rowsStandAlone_;
   std::vector<Film> films_;                 // live, last pass end
   std::vector<std::vector<double>> tallies_;  // live, last pass end
+  std::vector<Film> workerFilms_;               // workers 1 .. N - 1
+  std::vector<std::vector<double>> workerTallies_;
 };
 
 }  // namespace relt

@@ -78,3 +78,26 @@ TEST(PassFilm, ASnapshotIsNewOnlyWhenTheImageWouldChange) {
   EXPECT_TRUE(whole.showsNew({2, 0}, PassPoint{1, 3}));
   EXPECT_FALSE(rows.showsNew({1, 1}, PassPoint{1, 1}));
 }
+
+// Each worker thread adds to sums of its own; gathered, they are the live sums (and tallies), and
+// a pass end gathers them before its copy.
+TEST(PassFilm, WorkersSumsAreGatheredIntoTheLiveOnes) {
+  PassFilm film(2, 2, false, 4, 3);
+  EXPECT_EQ(&film.workerFilm(0), &film.live());
+  for (int w = 0; w < 3; ++w) {
+    film.workerFilm(w).addSplat(Vec2(0.5, 1.5), Color(double(w + 1)), 1.0);
+    (*film.workerTally(w))[2] += 1.0;
+  }
+  film.passEnded();
+  EXPECT_DOUBLE_EQ(film.live().data()[6], 6.0);
+  EXPECT_DOUBLE_EQ(film.tally()[2], 3.0);
+  EXPECT_DOUBLE_EQ(film.sumsShown({1, 0})[6], 6.0) << "the copy at the pass end has every worker's";
+  film.workerFilm(2).addSplat(Vec2(1.5, 0.5), Color(5.0), 1.0);
+  EXPECT_DOUBLE_EQ(film.live().data()[3], 0.0) << "not gathered yet";
+  film.gatherWorkers();
+  EXPECT_DOUBLE_EQ(film.live().data()[3], 5.0);
+  EXPECT_DOUBLE_EQ(film.workerFilm(2).data()[3], 0.0) << "a worker's sums start again from zero";
+  film.gatherWorkers();
+  EXPECT_DOUBLE_EQ(film.live().data()[3], 5.0) << "gathered once";
+  EXPECT_EQ(PassFilm(2, 2, true).workerTally(0), nullptr) << "no tally kept";
+}
