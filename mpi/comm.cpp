@@ -341,4 +341,13 @@ void shareRootProblem(std::string problem) {
   broadcastFromRoot(problem);
   if (!problem.empty()) throw InputError("", "", problem);
 }
+int ranksOnThisNode() {
+  MPI_Comm node;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  int ranks = 1;
+  MPI_Comm_size(node, &ranks);
+  MPI_Comm_free(&node);
+  return ranks;
+}
+
 }  // namespace relt::mpi

@@ -23,6 +23,9 @@ class Session {
   int rank_ = 0, size_ = 1;
 };
 
+// How many ranks of the job run on this rank's node (collective).
+int ranksOnThisNode();
+
 // From now on a rank that waits longer than this in one collective ends the job with a message
 // and status 1 (0: never). Rendering work between collectives does not count.
 void startStallWatchdog(double timeoutSeconds);

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/words.h"
+#include "parallel/workers.h"
 #include "pass_loop.h"
 
 namespace relt::mpi {
@@ -78,7 +79,7 @@ Image imageSoFar(const Session& session, const PassFilm& film, PassPoint at) {
 PassFilm erptFilm(const RenderSettings& settings) {
   const size_t pixels = size_t(settings.width) * settings.height;
   return PassFilm(settings.width, settings.height, samplesStayInTheirRow(Integrator::Erpt),
-                  settings.erptProposalFilter ? pixels : 0);
+                  settings.erptProposalFilter ? pixels : 0, settings.threads);
 }
 
 ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, PassFilm& film,
@@ -100,13 +101,20 @@ ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSett
                      bootstrap;
   // Passes of one seed per pixel, distributed and timed as pt's.
   PassHooks hooks;
+  std::vector<ErptCounters> byWorker(size_t(std::max(settings.threads, 1)));
   hooks.renderUnit = [&](uint64_t pass, int row) {
-    local.add(erptRow(eval, es, out.normaliser, settings.seed, pass, row, 1.0, film.live(),
-                      film.tally().empty() ? nullptr : &film.tally()));
+    const int w = currentWorker();
+    byWorker[size_t(w)].add(erptRow(eval, es, out.normaliser, settings.seed, pass, row, 1.0, film.workerFilm(w),
+                                    film.workerTally(w)));
+  };
+  auto counted = [&] {  // this rank's counters: the checkpoint's (root) and every worker's
+    ErptCounters c = local;
+    for (const ErptCounters& w : byWorker) c.add(w);
+    return c;
   };
   // This run's mutations per second (a resumed root's counters hold the earlier runs' too).
   hooks.rate = [&, earlier = local.mutations, since = start.elapsed](double elapsed) {
-    return double(local.mutations - earlier) * session.size() / std::max(elapsed - since, 1e-9);
+    return double(counted().mutations - earlier) * session.size() / std::max(elapsed - since, 1e-9);
   };
   hooks.rateUnit = "mutations";
   if (snapshot)
@@ -116,7 +124,8 @@ ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSett
     };
   hooks.chunkDone = [&, lastCheckpoint = start.elapsed](PassPoint at, double elapsed, bool more, bool save) mutable {
     if (!checkpointNow(plan, elapsed, lastCheckpoint, more, save)) return;
-    const ErptCounters sums = sumOverRanks(local);
+    film.gatherWorkers();
+    const ErptCounters sums = sumOverRanks(counted());
     nlohmann::json progress = passProgress(at, elapsed);
     progress["mutations"] = sums.mutations;
     saveCheckpoint(plan, "erpt", progress, film.checkpointFilms(at),
@@ -124,7 +133,7 @@ ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSett
   };
   out.end = runPasses(session, settings, film, hooks, start);
   out.image = imageSoFar(session, film, out.end);
-  out.counters = sumOverRanks(local);
+  out.counters = sumOverRanks(counted());
   return out;
 }
 

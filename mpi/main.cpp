@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "image/compare.h"
 #include "image/image.h"
+#include "parallel/workers.h"
 #include "schedule/schedule.h"
 #include "render_driver.h"
 #include "replica/permutation.h"
@@ -55,6 +56,7 @@ struct Options {
   std::vector<std::string> averageInputs;
   std::string averageOutput, averagePng;
   double stallTimeout = 120.0;
+  CLI::Option* threads = nullptr;
   relt::mpi::CheckpointPlan checkpoint;
 };
 
@@ -186,6 +188,10 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
       ->check(CLI::Range(1, relt::kMaxDepth));
   cmd.add_option("--seed", r.seed, "random seed; the image depends only on it and the sample count")
       ->capture_default_str();
+  o.threads = cmd.add_option("--threads", r.threads,
+                             "pt, bdpt, erpt: worker threads per rank (default: the cores the rank may use, shared "
+                             "with the node's other ranks unless mpirun binds them); the image does not depend on it")
+                  ->check(CLI::Range(1, relt::kMaxWorkers));
   cmd.add_option("--camera", r.camera, "camera name (default: the first camera)");
   cmd.add_option("--exposure", r.exposure, "PNG exposure in stops")->capture_default_str();
   cmd.add_option("--stall-timeout", o.stallTimeout,
@@ -305,6 +311,15 @@ void checkRenderOptions(Options& o) {
     throw relt::InputError("", "--direct-emission-spp", "only for pssmlt and relt");
   if (o.render.integrator != relt::Integrator::Erpt && (o.render.erptMaxConsecutive > 0 || o.render.erptProposalFilter))
     throw relt::InputError("", "--erpt-max-consecutive/--erpt-proposal-filter", "only for erpt");
+  if (chains && o.threads->count() > 0)
+    throw relt::InputError("", "--threads", "only for pt, bdpt and erpt (the chain integrators run one thread per rank)");
+}
+
+// --threads on auto (chain integrators: one); collective, as ranks on a node are counted.
+int threadsOnAuto(const relt::RenderSettings& r) {
+  const int ranksOnNode = relt::mpi::ranksOnThisNode();
+  if (relt::isMarkovChain(r.integrator)) return 1;
+  return relt::defaultThreads(relt::coresAvailable(), relt::coresOnline(), ranksOnNode);
 }
 
 }  // namespace
@@ -358,6 +373,7 @@ int main(int argc, char** argv) {
     checkOutputNames(o.render);
     checkReplicaOptions(o);
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
+    if (o.threads->count() == 0) o.render.threads = threadsOnAuto(o.render);
     relt::mpi::startStallWatchdog(o.stallTimeout);
     relt::mpi::runRender(session, o.render, o.checkpoint);
     return 0;

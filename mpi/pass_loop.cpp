@@ -6,8 +6,10 @@
 #include <chrono>
 #include <cstdio>
 #include <optional>
+#include <vector>
 
 #include "mcmc/round_schedule.h"
+#include "parallel/workers.h"
 #include "schedule/pace.h"
 #include "render/renderer.h"
 
@@ -37,6 +39,18 @@ struct ProgressPrinter {
     if (printed && tty) std::fprintf(stderr, "\n");
   }
 };
+
+// The units of rows first .. end - 1 of pass `pass` this rank owns, dealt in turn to its workers.
+void renderChunk(const Session& session, const RenderSettings& settings, const PassHooks& hooks, int pass, int first,
+                 int end) {
+  std::vector<int> rows;
+  for (int row = first; row < end; ++row)
+    if (ownsUnit(uint64_t(pass), row, settings.height, session.rank(), session.size())) rows.push_back(row);
+  const int workers = std::clamp(settings.threads, 1, std::max(int(rows.size()), 1));
+  runOnWorkers(workers, [&](int w) {
+    for (size_t k = size_t(w); k < rows.size(); k += size_t(workers)) hooks.renderUnit(uint64_t(pass), rows[k]);
+  });
+}
 
 }  // namespace
 
@@ -77,9 +91,7 @@ PassPoint runPasses(const Session& session, const RenderSettings& settings, Pass
   int chunk = kFirstPassChunkRows;
   for (;;) {
     const int first = at.rows, end = std::min(height, first + chunk);
-    for (int row = first; row < end; ++row)
-      if (ownsUnit(uint64_t(at.passes), row, height, session.rank(), session.size()))
-        hooks.renderUnit(uint64_t(at.passes), row);
+    renderChunk(session, settings, hooks, at.passes, first, end);
     at.rows = end;
     const bool passEnd = end == height;
     if (passEnd) {
@@ -103,9 +115,11 @@ PassPoint runPasses(const Session& session, const RenderSettings& settings, Pass
     if (hooks.snapshot && (save || (due && film.showsNew(at, lastShown)))) {
       lastSnapshot = elapsed;
       lastShown = at;
+      film.gatherWorkers();
       hooks.snapshot(at);
     }
     printer.print(at, elapsed);
+    if (!more) film.gatherWorkers();
     if (hooks.chunkDone) hooks.chunkDone(at, elapsed, more, save);
     if (!more) return at;
   }

@@ -35,7 +35,9 @@ PassStart passStartOf(const nlohmann::json& progress);
 Image reducedPassImage(const Session& session, const PassFilm& film, PassPoint at);
 
 struct PassHooks {
-  std::function<void(uint64_t pass, int row)> renderUnit;  // every owned unit of every pass
+  // Every owned unit of every pass, on the rank's worker threads at once (settings.threads): worker
+  // currentWorker() renders into film.workerFilm(currentWorker()).
+  std::function<void(uint64_t pass, int row)> renderUnit;
   // Optional: the root prints a progress line at most once a second with rate(elapsed) samples/s.
   std::function<double(double elapsed)> rate = {};
   const char* rateUnit = "samples";
@@ -44,12 +46,13 @@ struct PassHooks {
   std::function<void(PassPoint)> snapshot = {};
   // Optional: on every rank after every chunk (the last one with more = false: the budget is spent
   // or a rank was signalled to stop; save: a rank was asked to save and the snapshot was written:
-  // checkpoint now).
+  // checkpoint now). A checkpoint gathers the workers' sums first (PassFilm::gatherWorkers).
   std::function<void(PassPoint, double elapsed, bool more, bool save)> chunkDone = {};
 };
 
 // Runs the passes and returns where they ended: whole passes, or inside one if a rank was stopped.
-// `film` (which renderUnit fills) is told of every pass end before the hooks see it.
+// `film` (which renderUnit fills) is told of every pass end before the hooks see it, and has the
+// workers' sums gathered before a snapshot and at the end.
 PassPoint runPasses(const Session& session, const RenderSettings& settings, PassFilm& film, const PassHooks& hooks,
                     const PassStart& start = {});
 

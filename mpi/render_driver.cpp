@@ -14,6 +14,8 @@
 #include "relt_commit.h"
 #include "checkpoint_io.h"
 #include "core/error.h"
+#include "core/memory.h"
+#include "parallel/workers.h"
 #include "render/renderer.h"
 #include "direct_driver.h"
 #include "erpt_driver.h"
@@ -162,6 +164,7 @@ struct Gathered {
   std::vector<double> droppedPerRank;  // NaN/Inf samples each rank dropped
   std::vector<double> collective;
   std::vector<std::string> hosts;  // each rank's processor name
+  std::vector<double> peakResident;  // each rank's most resident bytes
 };
 
 // stats.json: the pass's rays per pixel as taken (0: no emitter in view, the chains did it) and time.
@@ -192,6 +195,7 @@ Gathered gatherAfterRender(Clock::time_point renderStart, const Renderer& render
   g.droppedPerRank = allgather(double(film.droppedSamples()));
   g.collective = allgather(collectiveSeconds());
   g.hosts = processorNames();
+  g.peakResident = allgather(double(peakResidentBytes()));
   return g;
 }
 
@@ -211,6 +215,9 @@ nlohmann::json commonStats(const RenderSettings& settings, const Session& sessio
   j["nan_inf_samples_dropped"] = g.dropped;
   j["nan_inf_samples_dropped_per_rank"] = counts(g.droppedPerRank);
   j["collective_seconds_per_rank"] = g.collective;
+  std::vector<double> mib;
+  for (double bytes : g.peakResident) mib.push_back(std::round(bytes / double(1 << 20) * 10.0) / 10.0);
+  j["peak_resident_mib_per_rank"] = mib;
   j["image_mean"] = image.mean();
   return j;
 }
@@ -415,7 +422,7 @@ void renderErpt(const Session& session, Renderer& renderer, const RenderSettings
 // only), and inside a pass for bdpt also the film of the whole passes (render/pass_film.h).
 void renderPasses(const Session& session, Renderer& renderer, const RenderSettings& settings,
                   Clock::time_point wallStart, const CheckpointPlan& plan, const Resumed* resumed) {
-  PassFilm film(settings.width, settings.height, samplesStayInTheirRow(settings.integrator));
+  PassFilm film(settings.width, settings.height, samplesStayInTheirRow(settings.integrator), 0, settings.threads);
   PassStart start;
   uint64_t earlierSamples = 0;
   if (resumed) {
@@ -427,7 +434,7 @@ void renderPasses(const Session& session, Renderer& renderer, const RenderSettin
   const auto renderStart = Clock::now();
   int snapshots = 0;
   PassHooks hooks;
-  hooks.renderUnit = [&](uint64_t pass, int row) { renderer.renderRow(pass, row, film.live()); };
+  hooks.renderUnit = [&](uint64_t pass, int row) { renderer.renderRow(pass, row, film.workerFilm(currentWorker())); };
   hooks.rate = [&](double elapsed) { return double(renderer.samples()) * session.size() / std::max(elapsed, 1e-9); };
   hooks.snapshot = [&](PassPoint at) {
     const Image image = reducedPassImage(session, film, at);
@@ -436,6 +443,7 @@ void renderPasses(const Session& session, Renderer& renderer, const RenderSettin
   };
   hooks.chunkDone = [&, lastCheckpoint = start.elapsed](PassPoint at, double elapsed, bool more, bool save) mutable {
     if (!checkpointNow(plan, elapsed, lastCheckpoint, more, save)) return;
+    film.gatherWorkers();
     nlohmann::json progress = passProgress(at, elapsed);
     progress["samples"] = earlierSamples + allreduceSum(renderer.samples());
     saveCheckpoint(plan, integratorName(settings.integrator), progress, film.checkpointFilms(at), {});

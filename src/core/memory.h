@@ -8,6 +8,8 @@ namespace relt {
 
 // Physical memory of this machine in bytes (0 if unknown).
 uint64_t physicalMemoryBytes();
+// The most resident memory this process has held so far, in bytes (0 if unknown).
+uint64_t peakResidentBytes();
 // "12.3 GiB"
 std::string formatGiB(double bytes);
 

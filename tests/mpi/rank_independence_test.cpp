@@ -171,3 +171,51 @@ TEST(DirectEmission, FurnaceMatchesTheAnalyticValueWithinOnePercent) {
     EXPECT_NEAR(readExr(out).mean(), expected, 0.01 * expected) << integrator;
   }
 }
+
+// Nor on the worker threads of a rank: -np 1 --threads 2 (and 3, which deals rows unevenly) and
+// -np 2 --threads 1 give the image of -np 1 --threads 1 for every integrator that takes threads;
+// the stats say how many ran.
+TEST(ThreadIndependence, PtBdptAndErptImagesAreTheSameOnAnySplitOfRanksAndThreads) {
+  struct Case {
+    std::string integrator, amount;
+  };
+  for (const Case& c : {Case{"pt", "--spp 3"}, Case{"bdpt", "--spp 3"}, Case{"erpt", "--spp 1 --chain-length 10"}}) {
+    SCOPED_TRACE(c.integrator);
+    const std::string dir = makeTempDir("threads-" + c.integrator);
+    const Image one = renderWithRanks(1, c.integrator, dir, c.amount + " --threads 1");
+    expectSameImage(one, renderWithRanks(2, c.integrator, dir, c.amount + " --threads 1"));
+    for (int threads : {2, 3}) {
+      const std::string stats = dir + "/t" + std::to_string(threads) + ".json";
+      expectSameImage(one, renderWithRanks(1, c.integrator, dir,
+                                           c.amount + " --threads " + std::to_string(threads) + " --stats " + stats));
+      EXPECT_EQ(nlohmann::json::parse(std::ifstream(stats))["settings"]["threads"].get<int>(), threads);
+    }
+  }
+}
+
+// A checkpoint of a render on two threads holds every worker's sums: resumed for more passes, it
+// gives the image of the render that never stopped.
+TEST(ThreadIndependence, ACheckpointOfTwoThreadsResumesToTheUninterruptedImage) {
+  const std::string dir = makeTempDir("threads-checkpoint");
+  const std::string scene = sourcePath("scenes/cornell-box.gltf"), common = " --integrator bdpt --width 40 --height 30 "
+                                                                            "--seed 5 --threads 2 ";
+  auto render = [&](const std::string& args) {
+    const CommandResult r = runCommand(mpirun(1) + reltBinary() + " render " + scene + common + args);
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+  };
+  render("-o " + dir + "/whole.exr --spp 4");
+  render("-o " + dir + "/half.exr --spp 2 --checkpoint " + dir + "/ck");
+  render("-o " + dir + "/resumed.exr --spp 4 --resume " + dir + "/ck");
+  expectSameImage(readExr(dir + "/whole.exr"), readExr(dir + "/resumed.exr"));
+}
+
+TEST(ThreadIndependence, TheChainIntegratorsRefuseThreads) {
+  const std::string dir = makeTempDir("threads-chains");
+  for (const char* integrator : {"pssmlt", "mmlt", "relt"}) {
+    const CommandResult r = runCommand(reltBinary() + " render " + sourcePath("scenes/cornell-box.gltf") + " -o " + dir +
+                                       "/x.exr --integrator " + integrator + " --threads 2");
+    EXPECT_EQ(r.exitCode, 2) << r.output;
+    EXPECT_NE(r.output.find("--threads"), std::string::npos) << r.output;
+    EXPECT_FALSE(fileExists(dir + "/x.exr"));
+  }
+}
