@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Speed of two relt binaries against each other on one scene, for changes smaller than this
 # machine's drift between runs (its speed wanders by 5-40 % within the hour).
-#   interleaved: A then B, PAIRS times; prints each pair's ratio B/A and their median.
+#   interleaved: A then B, PAIRS times, both on core 0 (one thread: --threads defaults to the
+#                cores a process may use); prints each pair's ratio B/A and their median.
 #   concurrent:  A and B at the same time, each pinned to its own core, swapping cores every
 #                run; a swap pair's ratio is the geometric mean of its two runs (cancels a
 #                difference between the cores); prints those and their geometric mean.
@@ -20,11 +21,9 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 
-# Samples per second of one render (binary, core or "any"); relt prints "... X M samples/s ...".
+# Samples per second of one render (binary, core); relt prints "... X M samples/s ...".
 rate() {
-  local pin=()
-  [ "$2" != any ] && pin=(taskset -c "$2")
-  "${pin[@]}" "$1" render "$ROOT/scenes/$SCENE.gltf" --integrator "$INTEGRATOR" --spp "$SPP" --width 256 --height 256 \
+  taskset -c "$2" "$1" render "$ROOT/scenes/$SCENE.gltf" --integrator "$INTEGRATOR" --spp "$SPP" --width 256 --height 256 \
     --max-depth 8 -o "$TMP/out-$2.exr" 2>&1 | sed -n 's/.* \([0-9.]*\) M samples\/s.*/\1/p' | tail -1
 }
 
@@ -33,8 +32,8 @@ echo "B: $B"
 case "$MODE" in
   interleaved)
     for i in $(seq "$PAIRS"); do
-      a=$(rate "$A" any)
-      b=$(rate "$B" any)
+      a=$(rate "$A" 0)
+      b=$(rate "$B" 0)
       awk -v a="$a" -v b="$b" 'BEGIN {printf "A %.3f M  B %.3f M  B/A %.3f\n", a, b, b / a}'
     done | tee "$TMP/pairs"
     awk '{print $NF}' "$TMP/pairs" | sort -g |
