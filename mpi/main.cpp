@@ -14,6 +14,7 @@
 #include "parallel/workers.h"
 #include "schedule/schedule.h"
 #include "render_driver.h"
+#include "render/option_use.h"
 #include "replica/permutation.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_summary.h"
@@ -36,6 +37,35 @@ const CLI::Validator kPositive(
     },
     "> 0");
 
+// A finite number in [lo, hi]; CLI::Range lets NaN through.
+CLI::Validator finiteIn(double lo, double hi) {
+  const std::string range = "in [" + CLI::detail::to_string(lo) + ", " + CLI::detail::to_string(hi) + "]";
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) {
+        double v = 0.0;
+        try {
+          v = std::stod(text);
+        } catch (const std::exception&) {
+          return "must be a number " + range + ", got " + text;
+        }
+        return std::isfinite(v) && v >= lo && v <= hi ? std::string() : "must be a number " + range + ", got " + text;
+      },
+      range);
+}
+
+// An unsigned 64-bit integer in decimal (CLI11 takes -1 as 2^64 - 1 and clamps what is larger).
+const CLI::Validator kUnsigned64(
+    [](std::string& text) {
+      const bool digits = !text.empty() && text.size() <= 20 && text.find_first_not_of("0123456789") == std::string::npos;
+      try {
+        if (digits) (void)std::stoull(text);
+      } catch (const std::exception&) {
+        return "must be an integer in [0, 2^64 - 1], got " + text;
+      }
+      return digits ? std::string() : "must be an integer in [0, 2^64 - 1], got " + text;
+    },
+    "0 .. 2^64 - 1");
+
 // The word after `relt`, if it is no subcommand (CLI11 would only say one is required).
 std::string unknownSubcommand(int argc, char** argv, const CLI::App& app) {
   if (argc < 2 || argv[1][0] == '-') return "";
@@ -49,88 +79,94 @@ struct Options {
   std::string integrator = "bdpt", mis = "power";
   std::string family = "kitaoka", exchange = "deo", placement = "auto", misLevels = "balance", init = "resample";
   std::string directSpp = "auto";
-  CLI::Option* chains = nullptr;
-  std::vector<CLI::Option*> reltOnly;  // options that only relt takes
+  CLI::App* renderCommand = nullptr;
   std::string infoScene;
   std::string compareA, compareB, compareDiff, comparePng;
   std::vector<std::string> averageInputs;
   std::string averageOutput, averagePng;
   double stallTimeout = 120.0;
   CLI::Option* threads = nullptr;
+  // The render options given on the command line.
+  std::vector<const CLI::Option*> given() const {
+    std::vector<const CLI::Option*> options;
+    for (const CLI::Option* opt : renderCommand->get_options())
+      if (opt->count() > 0) options.push_back(opt);
+    return options;
+  }
   relt::mpi::CheckpointPlan checkpoint;
 };
 
 // relt: the ladder (family, levels), how many ladders, the exchanges and where chains live.
 void addReplicaOptions(CLI::App& cmd, Options& o) {
   relt::ReplicaSettings& r = o.render.replica;
-  auto only = [&](CLI::Option* opt) { o.reltOnly.push_back(opt); };
-  only(cmd.add_option("--family", o.family, "relt: target family of the levels")
-           ->check(CLI::IsMember({"kitaoka", "relaxed", "tempered"}))
-           ->capture_default_str());
-  only(cmd.add_option("--levels", r.family.levels, "relt: levels per ladder (relaxed, tempered; kitaoka has 4)")
-           ->check(CLI::Range(2, relt::kMaxLevels))
-           ->capture_default_str());
-  only(cmd.add_option("--ladders", r.ladders, "relt: number of ladders (chains = ladders x levels)")
-           ->check(CLI::Range(1, 1 << 16))
-           ->capture_default_str());
-  only(cmd.add_option("--exchange", o.exchange, "relt: exchange move between levels")
-           ->check(CLI::IsMember({"deo", "neighbour", "permutation", "swap", "eem"}))
-           ->capture_default_str());
-  only(cmd.add_option("--exchange-interval", r.exchangeInterval, "relt: steps per chain between exchanges")
-           ->check(CLI::Range(1, 1 << 20))
-           ->capture_default_str());
-  only(cmd.add_option("--normaliser-lag", r.normaliserLag,
-                      "relt: rounds between taking large-step sums and using them in the normalisers (with packed "
-                      "placement a rank may run this many rounds ahead of the slowest)")
-           ->check(CLI::Range(1, 1024))
-           ->capture_default_str());
-  only(cmd.add_option("--normaliser-lag-growth", r.normaliserLagGrowth,
-                      "relt: the lag grows as rounds / N from --normaliser-lag to 8 times it, so ranks of a long "
-                      "render wait less for slow phases of others (0: a fixed lag)")
-           ->check(CLI::Range(0, 1 << 20))
-           ->capture_default_str());
-  only(cmd.add_option("--placement", o.placement,
-                      "relt: chains over ranks (spread: chain c on rank c mod P; packed: whole ladders, exchanges decided "
-                      "locally; auto: packed above 8 ranks when ladders >= 2 x ranks)")
-           ->check(CLI::IsMember({"auto", "spread", "packed"}))
-           ->capture_default_str());
-  only(cmd.add_option("--balance-window", r.balanceWindow,
-                      "relt: seconds of stepping between moves of chains to ranks in proportion to their measured "
-                      "speed (0: placement never changes)")
-           ->check(CLI::Range(0.0, 1e6))
-           ->capture_default_str());
-  only(cmd.add_option("--mis-levels", o.misLevels, "relt: MIS heuristic over levels")
-           ->check(CLI::IsMember({"balance", "power"}))
-           ->capture_default_str());
-  only(cmd.add_option("--init", o.init, "relt: first states (resample the bootstrap per level, or population annealing)")
-           ->check(CLI::IsMember({"resample", "annealing"}))
-           ->capture_default_str());
-  only(cmd.add_flag("--per-level", r.perLevel, "relt: also write each level's contribution as an EXR layer levelK"));
-  only(cmd.add_option("--trace", o.render.trace,
-                      "relt: write every rank's stepping time of each group round (the scaling model's input) as JSON"));
-  only(cmd.add_option("--relaxed-eps", r.family.relaxedEps1, "relt relaxed: eps_1 as a multiple of the mean of I")
-           ->check(kPositive)
-           ->capture_default_str());
-  only(cmd.add_option("--relaxed-ratio", r.family.relaxedRatio, "relt relaxed: eps_{k+1} / eps_k")
-           ->check(CLI::Range(1.0, 1e6))
-           ->capture_default_str());
-  only(cmd.add_option("--kitaoka-delta", r.family.kitaokaDelta, "relt kitaoka: weight of L5 in the specific replica")
-           ->check(CLI::Range(0.0, 1.0))
-           ->capture_default_str());
-  only(cmd.add_option("--temperature-max", r.family.temperatureMax, "relt tempered: temperature of the top level")
-           ->check(CLI::Range(1.0, 1e8))
-           ->capture_default_str());
-  only(cmd.add_option("--regularisation", r.family.regularisation,
-                      "relt tempered: rho_0 of the connection roughness floor rho_0 (1 + n)^-gamma (0 = off)")
-           ->check(CLI::Range(0.0, 1.0))
-           ->capture_default_str());
-  only(cmd.add_option("--regularisation-decay", r.family.regularisationDecay,
-                      "relt tempered: gamma of the regularisation schedule")
-           ->check(CLI::Range(0.0, 1.0))
-           ->capture_default_str());
-  only(cmd.add_option("--energy-rings", r.exchange.energyRings, "relt eem: number of energy rings (0: one per level)")
-           ->check(CLI::Range(0, 1024))
-           ->capture_default_str());
+  // Only relt takes these (render/option_use.cpp refuses them for the others).
+  cmd.add_option("--family", o.family, "relt: target family of the levels")
+      ->check(CLI::IsMember({"kitaoka", "relaxed", "tempered"}))
+      ->capture_default_str();
+  cmd.add_option("--levels", r.family.levels, "relt: levels per ladder (relaxed, tempered; kitaoka has 4)")
+      ->check(CLI::Range(2, relt::kMaxLevels))
+      ->capture_default_str();
+  cmd.add_option("--ladders", r.ladders, "relt: number of ladders (chains = ladders x levels)")
+      ->check(CLI::Range(1, 1 << 16))
+      ->capture_default_str();
+  cmd.add_option("--exchange", o.exchange, "relt: exchange move between levels")
+      ->check(CLI::IsMember({"deo", "neighbour", "permutation", "swap", "eem"}))
+      ->capture_default_str();
+  cmd.add_option("--exchange-interval", r.exchangeInterval, "relt: steps per chain between exchanges")
+      ->check(CLI::Range(1, 1 << 20))
+      ->capture_default_str();
+  cmd.add_option("--normaliser-lag", r.normaliserLag,
+                 "relt: rounds between taking large-step sums and using them in the normalisers (with packed "
+                 "placement a rank may run this many rounds ahead of the slowest)")
+      ->check(CLI::Range(1, 1024))
+      ->capture_default_str();
+  cmd.add_option("--normaliser-lag-growth", r.normaliserLagGrowth,
+                 "relt: the lag grows as rounds / N from --normaliser-lag to 8 times it, so ranks of a long "
+                 "render wait less for slow phases of others (0: a fixed lag)")
+      ->check(CLI::Range(0, 1 << 20))
+      ->capture_default_str();
+  cmd.add_option("--placement", o.placement,
+                 "relt: chains over ranks (spread: chain c on rank c mod P; packed: whole ladders, exchanges decided "
+                 "locally; auto: packed above 8 ranks when ladders >= 2 x ranks)")
+      ->check(CLI::IsMember({"auto", "spread", "packed"}))
+      ->capture_default_str();
+  cmd.add_option("--balance-window", r.balanceWindow,
+                 "relt: seconds of stepping between moves of chains to ranks in proportion to their measured "
+                 "speed (0: placement never changes)")
+      ->check(CLI::Range(0.0, 1e6))
+      ->capture_default_str();
+  cmd.add_option("--mis-levels", o.misLevels, "relt: MIS heuristic over levels")
+      ->check(CLI::IsMember({"balance", "power"}))
+      ->capture_default_str();
+  cmd.add_option("--init", o.init, "relt: first states (resample the bootstrap per level, or population annealing)")
+      ->check(CLI::IsMember({"resample", "annealing"}))
+      ->capture_default_str();
+  cmd.add_flag("--per-level", r.perLevel, "relt: also write each level's contribution as an EXR layer levelK");
+  cmd.add_option("--trace", o.render.trace,
+                 "relt: write every rank's stepping time of each group round (the scaling model's input) as JSON");
+  cmd.add_option("--relaxed-eps", r.family.relaxedEps1, "relt relaxed: eps_1 as a multiple of the mean of I")
+      ->check(kPositive)
+      ->capture_default_str();
+  cmd.add_option("--relaxed-ratio", r.family.relaxedRatio, "relt relaxed: eps_{k+1} / eps_k")
+      ->check(CLI::Range(1.0, 1e6))
+      ->capture_default_str();
+  cmd.add_option("--kitaoka-delta", r.family.kitaokaDelta, "relt kitaoka: weight of L5 in the specific replica")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd.add_option("--temperature-max", r.family.temperatureMax, "relt tempered: temperature of the top level")
+      ->check(CLI::Range(1.0, 1e8))
+      ->capture_default_str();
+  cmd.add_option("--regularisation", r.family.regularisation,
+                 "relt tempered: rho_0 of the connection roughness floor rho_0 (1 + n)^-gamma (0 = off)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd.add_option("--regularisation-decay", r.family.regularisationDecay,
+                 "relt tempered: gamma of the regularisation schedule")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd.add_option("--energy-rings", r.exchange.energyRings, "relt eem: number of energy rings (0: one per level)")
+      ->check(CLI::Range(0, 1024))
+      ->capture_default_str();
 }
 
 void addRenderOptions(CLI::App& cmd, Options& o) {
@@ -151,7 +187,7 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   spp->excludes(time);
   mpp->excludes(spp);
   mpp->excludes(time);
-  o.chains = cmd.add_option("--chains", r.chains, "pssmlt, mmlt: number of chains (independent of the rank count)")
+  cmd.add_option("--chains", r.chains, "pssmlt, mmlt: number of chains (independent of the rank count)")
                  ->check(CLI::Range(1, 1 << 20))
                  ->capture_default_str();
   addReplicaOptions(cmd, o);
@@ -187,13 +223,14 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--max-depth", r.maxDepth, "maximum path segments (default: scene extras, else 8)")
       ->check(CLI::Range(1, relt::kMaxDepth));
   cmd.add_option("--seed", r.seed, "random seed; the image depends only on it and the sample count")
+      ->check(kUnsigned64)
       ->capture_default_str();
   o.threads = cmd.add_option("--threads", r.threads,
                              "pt, bdpt, erpt: worker threads per rank (default: the cores the rank may use, shared "
                              "with the node's other ranks unless mpirun binds them); the image does not depend on it")
                   ->check(CLI::Range(1, relt::kMaxWorkers));
   cmd.add_option("--camera", r.camera, "camera name (default: the first camera)");
-  cmd.add_option("--exposure", r.exposure, "PNG exposure in stops")->capture_default_str();
+  cmd.add_option("--exposure", r.exposure, "PNG exposure in stops")->check(finiteIn(-64.0, 64.0))->capture_default_str();
   cmd.add_option("--stall-timeout", o.stallTimeout,
                  "end the job with an error when a rank waits this many seconds for the others (0: never)")
       ->check(CLI::Range(0.0, 1e6))
@@ -223,12 +260,7 @@ void checkOutputNames(const relt::RenderSettings& r) {
 // Replica options belong to relt alone, and a few combinations cannot work.
 void checkReplicaOptions(Options& o) {
   relt::RenderSettings& r = o.render;
-  const bool isRelt = r.integrator == relt::Integrator::Relt;
-  for (CLI::Option* opt : o.reltOnly)
-    if (!isRelt && opt->count() > 0) throw relt::InputError("", opt->get_name(), "only for --integrator relt");
-  if (!isRelt) return;
-  if (o.chains->count() > 0)
-    throw relt::InputError("", "--chains", "relt runs ladders x levels chains: use --ladders and --levels");
+  if (r.integrator != relt::Integrator::Relt) return;
   r.replica.family.kind = *relt::parseFamily(o.family);
   r.replica.exchange.move = *relt::parseExchangeMove(o.exchange);
   r.replica.placement = *relt::parsePlacement(o.placement);
@@ -239,15 +271,14 @@ void checkReplicaOptions(Options& o) {
       {"--relaxed-eps", relt::FamilyKind::Relaxed},       {"--relaxed-ratio", relt::FamilyKind::Relaxed},
       {"--kitaoka-delta", relt::FamilyKind::Kitaoka},     {"--temperature-max", relt::FamilyKind::Tempered},
       {"--regularisation", relt::FamilyKind::Tempered},   {"--regularisation-decay", relt::FamilyKind::Tempered}};
-  for (CLI::Option* opt : o.reltOnly) {
-    if (opt->count() == 0) continue;
+  for (const CLI::Option* opt : o.given()) {
     for (const auto& [name, kind] : owner)
       if (opt->get_name() == name && kind != r.replica.family.kind)
         throw relt::InputError("", name, std::string("only for --family ") + relt::familyName(kind));
   }
   if (r.replica.family.kind == relt::FamilyKind::Kitaoka) {
-    for (CLI::Option* opt : o.reltOnly)
-      if (opt->count() > 0 && opt->get_name() == "--levels")
+    for (const CLI::Option* opt : o.given())
+      if (opt->get_name() == "--levels")
         throw relt::InputError("", opt->get_name(), "not for --family kitaoka (its four levels are fixed)");
     r.replica.family.levels = 4;
   }
@@ -292,7 +323,7 @@ int runInfo(const Options& o, bool root) {
   return 0;
 }
 
-// The integrator named by --integrator, and the options refused for it.
+// The integrator named by --integrator; an option it does not use is refused.
 void checkRenderOptions(Options& o) {
   o.render.integrator = o.integrator == "pt"       ? relt::Integrator::PathTracing
                         : o.integrator == "bdpt"   ? relt::Integrator::Bdpt
@@ -300,19 +331,12 @@ void checkRenderOptions(Options& o) {
                         : o.integrator == "mmlt"   ? relt::Integrator::Mmlt
                         : o.integrator == "relt"   ? relt::Integrator::Relt
                                                    : relt::Integrator::Erpt;
-  const bool chains = relt::isMarkovChain(o.render.integrator);
-  if (chains && o.render.spp) throw relt::InputError("", "--spp", o.integrator + " takes --mutations-per-pixel");
-  if (!chains && o.render.mutationsPerPixel)
-    throw relt::InputError("", "--mutations-per-pixel", "only for the Markov-chain integrators (pssmlt, mmlt, relt)");
+  for (const CLI::Option* opt : o.given())
+    if (const auto why = relt::unusedOptionReason(opt->get_name(), o.render.integrator))
+      throw relt::InputError("", opt->get_name(), *why);
   if (o.render.smallStepMin >= o.render.smallStepMax)
     throw relt::InputError("", "--small-step-min", "must be smaller than --small-step-max");
   o.render.directSpp = o.directSpp == "auto" ? relt::kDirectSppAuto : std::stoi(o.directSpp);
-  if (o.render.directSpp > 0 && !relt::directEmissionApart(o.render))
-    throw relt::InputError("", "--direct-emission-spp", "only for pssmlt and relt");
-  if (o.render.integrator != relt::Integrator::Erpt && (o.render.erptMaxConsecutive > 0 || o.render.erptProposalFilter))
-    throw relt::InputError("", "--erpt-max-consecutive/--erpt-proposal-filter", "only for erpt");
-  if (chains && o.threads->count() > 0)
-    throw relt::InputError("", "--threads", "only for pt, bdpt and erpt (the chain integrators run one thread per rank)");
 }
 
 // --threads on auto (chain integrators: one); collective, as ranks on a node are counted.
@@ -334,6 +358,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   Options o;
   CLI::App* render = app.add_subcommand("render", "render a scene");
+  o.renderCommand = render;
   addRenderOptions(*render, o);
   CLI::App* info = app.add_subcommand("info", "validate and summarise a scene");
   info->add_option("scene", o.infoScene, "glTF 2.0 scene")->required();
