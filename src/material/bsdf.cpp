@@ -143,84 +143,96 @@ Bsdf::Value Bsdf::evaluateLobes(const Vec3& wo, const Vec3& wi, TransportMode mo
   return {v.f, v.pdf};
 }
 
+// Accepts a local direction if it lies on the side of ng the lobe requires (wo's side when sameSide).
+bool Bsdf::toWorldChecked(const Vec3& wi, bool sameSide, float go, Vec3* wiW) const {
+  *wiW = frame_.toWorld(wi);
+  const float gi = glm::dot(*wiW, ng_);
+  return gi != 0.0f && (onPositiveSide(gi) == onPositiveSide(go)) == sameSide;
+}
+
+// A sampled rough direction, valued and weighted by the lobes as evaluate() would.
+std::optional<BsdfSample> Bsdf::valuedSample(const Vec3& woW, const Vec3& wiW, TransportMode mode) const {
+  const LobeValue v = evalLocal(*material_, frame_, ng_, alpha_, rough_.distribution, woW, wiW, mode);
+  if (v.pdf <= 0.0f || isBlack(v.f)) return std::nullopt;
+  return BsdfSample{wiW, v.f, v.pdf, false};
+}
+
 std::optional<BsdfSample> Bsdf::sample(const Vec3& woW, const Vec2& u, float uLobe, TransportMode mode) const {
-  const Material& mat = *material_;
   const float go = glm::dot(woW, ng_);
-  // Accepts a local direction if it lies on the side of ng the lobe requires.
-  auto toWorldChecked = [&](const Vec3& wi, bool sameSide, Vec3* wiW) {
-    *wiW = frame_.toWorld(wi);
-    const float gi = glm::dot(*wiW, ng_);
-    return gi != 0.0f && (onPositiveSide(gi) == onPositiveSide(go)) == sameSide;
-  };
-  if (mat.kind == MaterialKind::Lambert) {  // only wo's normal component matters
-    const float woZ = glm::dot(woW, frame_.n);
-    if (go == 0.0f || woZ == 0.0f) return std::nullopt;
-    Vec3 wi = cosineHemisphere(u);
-    if (wi.z <= 0.0f) return std::nullopt;
-    if (woZ < 0.0f) wi.z = -wi.z;
-    Vec3 wiW;
-    if (!toWorldChecked(wi, true, &wiW)) return std::nullopt;
-    return BsdfSample{wiW, mat.baseColor * kInvPi, std::abs(wi.z) * kInvPi, false};
-  }
+  if (material_->kind == MaterialKind::Lambert) return sampleLambert(woW, go, u);
   const Vec3 wo = frame_.toLocal(woW);
   if (go == 0.0f || wo.z == 0.0f) return std::nullopt;
-  const float side = wo.z > 0.0f ? 1.0f : -1.0f;
-  const Vec3 woUp(wo.x, wo.y, std::abs(wo.z));  // wo mirrored into the upper hemisphere
-  auto finish = [&](const Vec3& wiW) -> std::optional<BsdfSample> {
-    const LobeValue v = evalLocal(mat, frame_, ng_, alpha_, rough_.distribution, woW, wiW, mode);
-    if (v.pdf <= 0.0f || isBlack(v.f)) return std::nullopt;
-    return BsdfSample{wiW, v.f, v.pdf, false};
-  };
-
-  Vec3 wiW;
-  switch (mat.kind) {
-    case MaterialKind::Lambert:
-      break;  // above
-    case MaterialKind::Conductor: {
-      if (alpha_ == 0.0f) {
-        // Perfect mirror: the delta's coefficient is F, divided by |cos wi| per BsdfSample's contract.
-        if (!toWorldChecked(Vec3(-wo.x, -wo.y, wo.z), true, &wiW)) return std::nullopt;
-        const Color f = fresnelSchlick(mat.baseColor, woUp.z) / woUp.z;
-        if (!isFinite(f) || isBlack(f)) return std::nullopt;
-        return BsdfSample{wiW, f, 1.0f, true};
-      }
-      const MicrofacetDistribution dist(rough_.distribution, alpha_);
-      const Vec3 m = dist.sampleVisible(woUp, u);
-      const float cosOm = glm::dot(woUp, m);
-      if (cosOm <= 0.0f) return std::nullopt;
-      Vec3 wi = 2.0f * cosOm * m - woUp;  // reflect about m (Walter Eq. 39)
-      if (wi.z <= 0.0f) return std::nullopt;
-      wi.z *= side;
-      if (!toWorldChecked(wi, true, &wiW)) return std::nullopt;
-      return finish(wiW);
-    }
-    case MaterialKind::Dielectric:
-      break;
-  }
-
+  if (material_->kind == MaterialKind::Conductor) return sampleConductor(woW, wo, go, u, mode);
   // Dielectric: +z is outside. wo's shading side must match its geometric side (it picks eta).
   if (wo.z * go <= 0.0f) return std::nullopt;
-  const float etaRel = side > 0.0f ? mat.ior : 1.0f / mat.ior;  // eta on the far side / eta on wo's side
-  if (alpha_ == 0.0f) {
-    const float fresnel = fresnelDielectric(wo.z, mat.ior);
-    if (uLobe < fresnel) {
-      const float f = fresnel / woUp.z;
-      if (!std::isfinite(f) || !toWorldChecked(Vec3(-wo.x, -wo.y, wo.z), true, &wiW)) return std::nullopt;
-      return BsdfSample{wiW, Color(f), fresnel, true};
-    }
-    // Snell's law with the normal on wo's side; sin2T < 1 here since F < 1.
-    const float sin2T = (1.0f - woUp.z * woUp.z) / (etaRel * etaRel);
-    if (sin2T >= 1.0f) return std::nullopt;
-    const float cosT = std::sqrt(1.0f - sin2T);
-    if (!toWorldChecked(Vec3(-wo.x / etaRel, -wo.y / etaRel, -side * cosT), false, &wiW)) return std::nullopt;
-    const float t = 1.0f - fresnel;
-    // Radiance crossing into wo's medium scales by (eta_o / eta_i)^2 = 1 / etaRel^2 (Veach 1997 Sec. 5.2).
-    const float scale = mode == TransportMode::Radiance ? t / (etaRel * etaRel * cosT) : t / cosT;
-    const Color f = mat.baseColor * scale;
-    if (!isFinite(f) || isBlack(f)) return std::nullopt;
-    return BsdfSample{wiW, f, t, true};
-  }
+  if (alpha_ == 0.0f) return sampleSmoothDielectric(wo, go, uLobe, mode);
+  return sampleRoughDielectric(woW, wo, go, u, uLobe, mode);
+}
 
+std::optional<BsdfSample> Bsdf::sampleLambert(const Vec3& woW, float go, const Vec2& u) const {
+  const float woZ = glm::dot(woW, frame_.n);  // only wo's normal component matters
+  if (go == 0.0f || woZ == 0.0f) return std::nullopt;
+  Vec3 wi = cosineHemisphere(u);
+  if (wi.z <= 0.0f) return std::nullopt;
+  if (woZ < 0.0f) wi.z = -wi.z;
+  Vec3 wiW;
+  if (!toWorldChecked(wi, true, go, &wiW)) return std::nullopt;
+  return BsdfSample{wiW, material_->baseColor * kInvPi, std::abs(wi.z) * kInvPi, false};
+}
+
+std::optional<BsdfSample> Bsdf::sampleConductor(const Vec3& woW, const Vec3& wo, float go, const Vec2& u,
+                                                TransportMode mode) const {
+  const float side = wo.z > 0.0f ? 1.0f : -1.0f;
+  const Vec3 woUp(wo.x, wo.y, std::abs(wo.z));  // wo mirrored into the upper hemisphere
+  Vec3 wiW;
+  if (alpha_ == 0.0f) {
+    // Perfect mirror: the delta's coefficient is F, divided by |cos wi| per BsdfSample's contract.
+    if (!toWorldChecked(Vec3(-wo.x, -wo.y, wo.z), true, go, &wiW)) return std::nullopt;
+    const Color f = fresnelSchlick(material_->baseColor, woUp.z) / woUp.z;
+    if (!isFinite(f) || isBlack(f)) return std::nullopt;
+    return BsdfSample{wiW, f, 1.0f, true};
+  }
+  const MicrofacetDistribution dist(rough_.distribution, alpha_);
+  const Vec3 m = dist.sampleVisible(woUp, u);
+  const float cosOm = glm::dot(woUp, m);
+  if (cosOm <= 0.0f) return std::nullopt;
+  Vec3 wi = 2.0f * cosOm * m - woUp;  // reflect about m (Walter Eq. 39)
+  if (wi.z <= 0.0f) return std::nullopt;
+  wi.z *= side;
+  if (!toWorldChecked(wi, true, go, &wiW)) return std::nullopt;
+  return valuedSample(woW, wiW, mode);
+}
+
+std::optional<BsdfSample> Bsdf::sampleSmoothDielectric(const Vec3& wo, float go, float uLobe, TransportMode mode) const {
+  const Material& mat = *material_;
+  const float side = wo.z > 0.0f ? 1.0f : -1.0f;
+  const float woUpZ = std::abs(wo.z);
+  const float etaRel = side > 0.0f ? mat.ior : 1.0f / mat.ior;  // eta on the far side / eta on wo's side
+  const float fresnel = fresnelDielectric(wo.z, mat.ior);
+  Vec3 wiW;
+  if (uLobe < fresnel) {
+    const float f = fresnel / woUpZ;
+    if (!std::isfinite(f) || !toWorldChecked(Vec3(-wo.x, -wo.y, wo.z), true, go, &wiW)) return std::nullopt;
+    return BsdfSample{wiW, Color(f), fresnel, true};
+  }
+  // Snell's law with the normal on wo's side; sin2T < 1 here since F < 1.
+  const float sin2T = (1.0f - woUpZ * woUpZ) / (etaRel * etaRel);
+  if (sin2T >= 1.0f) return std::nullopt;
+  const float cosT = std::sqrt(1.0f - sin2T);
+  if (!toWorldChecked(Vec3(-wo.x / etaRel, -wo.y / etaRel, -side * cosT), false, go, &wiW)) return std::nullopt;
+  const float t = 1.0f - fresnel;
+  // Radiance crossing into wo's medium scales by (eta_o / eta_i)^2 = 1 / etaRel^2 (Veach 1997 Sec. 5.2).
+  const float scale = mode == TransportMode::Radiance ? t / (etaRel * etaRel * cosT) : t / cosT;
+  const Color f = mat.baseColor * scale;
+  if (!isFinite(f) || isBlack(f)) return std::nullopt;
+  return BsdfSample{wiW, f, t, true};
+}
+
+std::optional<BsdfSample> Bsdf::sampleRoughDielectric(const Vec3& woW, const Vec3& wo, float go, const Vec2& u,
+                                                      float uLobe, TransportMode mode) const {
+  const float side = wo.z > 0.0f ? 1.0f : -1.0f;
+  const Vec3 woUp(wo.x, wo.y, std::abs(wo.z));  // wo mirrored into the upper hemisphere
+  const float etaRel = side > 0.0f ? material_->ior : 1.0f / material_->ior;
   const MicrofacetDistribution dist(rough_.distribution, alpha_);
   const Vec3 mUp = dist.sampleVisible(woUp, u);
   const float cosOm = glm::dot(woUp, mUp);
@@ -238,8 +250,9 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& woW, const Vec2& u, float uLo
     if (wi.z >= 0.0f) return std::nullopt;
   }
   wi.z *= side;
-  if (!toWorldChecked(wi, uLobe < fresnel, &wiW)) return std::nullopt;
-  return finish(wiW);
+  Vec3 wiW;
+  if (!toWorldChecked(wi, uLobe < fresnel, go, &wiW)) return std::nullopt;
+  return valuedSample(woW, wiW, mode);
 }
 
 }  // namespace relt

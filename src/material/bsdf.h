@@ -72,6 +72,15 @@ class Bsdf {
 
  private:
   Value evaluateLobes(const Vec3& wo, const Vec3& wi, TransportMode mode) const;
+  // sample() per lobe; wo is local, go = dot(woW, ng).
+  std::optional<BsdfSample> sampleLambert(const Vec3& woW, float go, const Vec2& u) const;
+  std::optional<BsdfSample> sampleConductor(const Vec3& woW, const Vec3& wo, float go, const Vec2& u,
+                                            TransportMode mode) const;
+  std::optional<BsdfSample> sampleSmoothDielectric(const Vec3& wo, float go, float uLobe, TransportMode mode) const;
+  std::optional<BsdfSample> sampleRoughDielectric(const Vec3& woW, const Vec3& wo, float go, const Vec2& u, float uLobe,
+                                                  TransportMode mode) const;
+  bool toWorldChecked(const Vec3& wi, bool sameSide, float go, Vec3* wiW) const;
+  std::optional<BsdfSample> valuedSample(const Vec3& woW, const Vec3& wiW, TransportMode mode) const;
 
   const Material* material_;
   Frame frame_;

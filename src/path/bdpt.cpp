@@ -166,143 +166,154 @@ bool Bdpt::traceStrategy(int s, int t, const Vec2& film, SampleSource& source, P
   return out.splats.size() > before;
 }
 
+// The geometry of strategy (s, t) without its end BSDFs: s = 0 the camera subpath hit an emitter,
+// t = 1 a light vertex seen by the camera, s = 1 a light point sampled for the camera end, else
+// the two subpaths' ends joined. False when it cannot contribute.
+bool Bdpt::joinEnds(int s, int t, const Vec2& film, SampleSource& source, Connection& c) {
+  const bool tempered = tempering_ != nullptr;
+  c.splatFilm = film;
+  c.lightSpan = std::span<PathVertex>(light_.data(), static_cast<size_t>(s));
+  c.cameraSpan = std::span<PathVertex>(camera_.data(), static_cast<size_t>(t));
+  if (s == 0) {
+    const PathVertex& v = camera_[t - 1];
+    if (!v.isSurface()) return false;
+    c.front = v.beta * ctx_.lights.emitted(v.sp, v.wo);
+    c.cls = anyDelta(c.cameraSpan.subspan(1, t - 2)) ? PathClass::L0 : PathClass::L1;
+    return true;
+  }
+  if (t == 1) return joinCamera(light_[s - 1], c);
+  if (s == 1) return joinLightSample(camera_[t - 1], source, c);
+  const PathVertex& l = light_[s - 1];
+  const PathVertex& v = camera_[t - 1];
+  if (!tempered && (l.delta || v.delta)) return false;
+  const Vec3 d = v.sp.p - l.sp.p;
+  const float dist2 = glm::dot(d, d);
+  if (!(dist2 > 0.0f)) return false;
+  const Vec3 w = d / std::sqrt(dist2);
+  c.front = l.beta * v.beta * (cosAt(l, w) * cosAt(v, w) / dist2);
+  c.lightEnd = &l;
+  c.cameraEnd = &v;
+  c.wL = w;
+  c.wC = -w;
+  c.cls = PathClass::L5;
+  return true;
+}
+
+// t = 1: light vertex l seen through the camera, splatted where it lands on the film.
+bool Bdpt::joinCamera(const PathVertex& l, Connection& c) const {
+  if (tempering_ == nullptr && l.isSurface() && l.delta) return false;
+  const Vec3 toCam = ctx_.camera.position() - l.sp.p;
+  const float dist2 = glm::dot(toCam, toCam);
+  if (!(dist2 > 0.0f)) return false;
+  const Vec3 w = toCam / std::sqrt(dist2);
+  const auto fp = ctx_.camera.filmPosition(-w);
+  if (!fp) return false;
+  const float cosCam = glm::dot(ctx_.camera.forward(), -w);
+  c.front = l.beta * (cosAt(l, w) * cosCam / dist2 * ctx_.camera.importance(-w));
+  if (l.isSurface()) {
+    c.lightEnd = &l;
+    c.wL = w;
+  } else {
+    c.front *= l.delta ? ctx_.lights.intensity(l.light, w) : ctx_.lights.emitted(l.sp, w);
+  }
+  c.splatFilm = *fp;
+  c.cls = PathClass::L4;
+  return true;
+}
+
+// s = 1: a light point sampled for camera vertex v (next-event estimation).
+bool Bdpt::joinLightSample(const PathVertex& v, SampleSource& source, Connection& c) const {
+  if (tempering_ == nullptr && v.delta) return false;
+  const float uPick = source.next(SampleStream::Connection);
+  const Vec2 uPos = source.next2(SampleStream::Connection);
+  c.lp = ctx_.lights.samplePoint(uPick, uPos);
+  c.sampled = lightVertex(c.lp);
+  const Vec3 d = c.sampled.sp.p - v.sp.p;
+  const float dist2 = glm::dot(d, d);
+  if (!(dist2 > 0.0f)) return false;
+  const Vec3 w = d / std::sqrt(dist2);
+  const Color le = c.lp.delta ? ctx_.lights.intensity(c.lp.light, -w) : ctx_.lights.emitted(c.lp.sp, -w);
+  c.front = v.beta * le * c.sampled.beta * (cosAt(v, w) * cosAt(c.sampled, w) / dist2);
+  c.cameraEnd = &v;
+  c.wC = w;
+  c.lightSpan = std::span<PathVertex>(&c.sampled, 1);
+  c.cls = PathClass::L2;
+  return true;
+}
+
+// front * f_L * f_C, with the given BSDFs at the ends (null: the vertex's own).
+Color Bdpt::endsValue(const Connection& c, const Bsdf* bL, const Bsdf* bC) const {
+  Color v = c.front;
+  if (c.lightEnd) v *= surfaceF(*c.lightEnd, c.wL, TransportMode::Importance, bL);
+  if (c.cameraEnd && !isBlack(v)) v *= surfaceF(*c.cameraEnd, c.wC, TransportMode::Radiance, bC);
+  return v;
+}
+
+// Tempered levels: the end BSDFs each level uses (none: the level's contribution is the
+// untempered one) and their values. From the hottest level down: a zero there is a zero for every
+// cooler level too (same geometry, narrower lobes), which skips most connections through smooth
+// surfaces. Returns the levels filled (0: every level is untempered here); `any` is set when one
+// contributes.
+int Bdpt::temperedLevelValues(const Connection& c, bool& any) {
+  auto temperable = [](const PathVertex* v) { return v && v->bsdf->material().kind != MaterialKind::Lambert; };
+  const PathVertex* tl = temperable(c.lightEnd) ? c.lightEnd : nullptr;
+  const PathVertex* tc = temperable(c.cameraEnd) ? c.cameraEnd : nullptr;
+  const int levels = tempering_ != nullptr && (tl || tc) ? tempering_->levels() : 0;
+  if (levels == 0) return 0;
+  levelValue_.assign(size_t(levels), Color(0.0f));
+  levelOwn_.assign(size_t(levels), 0);
+  levelL_.resize(size_t(levels));
+  levelC_.resize(size_t(levels));
+  bool cooler = true;  // the levels below may still contribute
+  for (int k = levels - 1; k >= 0; --k) {
+    const auto roughL = tl ? tempering_->roughness(tl->bsdf->material(), k) : std::nullopt;
+    const auto roughC = tc ? tempering_->roughness(tc->bsdf->material(), k) : std::nullopt;
+    if (!roughL && !roughC) {
+      levelOwn_[size_t(k)] = 1;
+      continue;
+    }
+    if (!cooler) continue;
+    std::optional<Bsdf>&bL = levelL_[size_t(k)], &bC = levelC_[size_t(k)];
+    bL.reset();
+    bC.reset();
+    if (roughL) bL.emplace(tl->bsdf->material(), tl->sp.ns, tl->sp.ng, *roughL);
+    if (roughC) bC.emplace(tc->bsdf->material(), tc->sp.ns, tc->sp.ng, *roughC);
+    levelValue_[size_t(k)] = endsValue(c, bL ? &*bL : nullptr, bC ? &*bC : nullptr);
+    cooler = !isBlack(levelValue_[size_t(k)]);
+    any |= cooler;
+  }
+  return levels;
+}
+
+// One visibility ray for the untempered and every tempered contribution.
+bool Bdpt::connectionBlocked(int s, int t, const Connection& c) const {
+  if (s == 0) return false;  // the camera subpath found the emitter itself
+  if (t == 1) return ctx_.tracer.occludedToPoint(light_[s - 1].sp.p, light_[s - 1].sp.ng, ctx_.camera.position());
+  if (s == 1)
+    return c.lp.delta ? ctx_.tracer.occludedToPoint(c.cameraEnd->sp.p, c.cameraEnd->sp.ng, c.lp.sp.p)
+                      : ctx_.tracer.occluded(c.cameraEnd->sp.p, c.cameraEnd->sp.ng, c.lp.sp.p, c.lp.sp.ng);
+  return ctx_.tracer.occluded(c.lightEnd->sp.p, c.lightEnd->sp.ng, c.cameraEnd->sp.p, c.cameraEnd->sp.ng);
+}
+
 // A strategy's contribution is front * f_L * f_C: f_L, f_C are the BSDFs of the surface vertices
 // the connection joins (absent at a light or camera end) and front everything else. Tempering
 // re-evaluates only those two BSDFs and the MIS weight.
 void Bdpt::connect(int s, int t, const Vec2& film, SampleSource& source, PathSample& out) {
-  const bool tempered = tempering_ != nullptr;
-  Color front(0.0f);
-  const PathVertex *lightEnd = nullptr, *cameraEnd = nullptr;
-  Vec3 wL(0.0f), wC(0.0f);  // directions the end BSDFs are evaluated towards
-  Vec2 splatFilm = film;
-  PathClass cls;
-  PathVertex sampled;
-  LightPoint lp;
-  std::span<PathVertex> lightSpan(light_.data(), static_cast<size_t>(s));
-  std::span<PathVertex> cameraSpan(camera_.data(), static_cast<size_t>(t));
-
-  if (s == 0) {
-    const PathVertex& c = camera_[t - 1];
-    if (!c.isSurface()) return;
-    front = c.beta * ctx_.lights.emitted(c.sp, c.wo);
-    cls = anyDelta(cameraSpan.subspan(1, t - 2)) ? PathClass::L0 : PathClass::L1;
-  } else if (t == 1) {
-    const PathVertex& l = light_[s - 1];
-    if (!tempered && l.isSurface() && l.delta) return;
-    const Vec3 toCam = ctx_.camera.position() - l.sp.p;
-    const float dist2 = glm::dot(toCam, toCam);
-    if (!(dist2 > 0.0f)) return;
-    const Vec3 w = toCam / std::sqrt(dist2);
-    const auto fp = ctx_.camera.filmPosition(-w);
-    if (!fp) return;
-    const float cosCam = glm::dot(ctx_.camera.forward(), -w);
-    front = l.beta * (cosAt(l, w) * cosCam / dist2 * ctx_.camera.importance(-w));
-    if (l.isSurface()) {
-      lightEnd = &l;
-      wL = w;
-    } else {
-      front *= l.delta ? ctx_.lights.intensity(l.light, w) : ctx_.lights.emitted(l.sp, w);
-    }
-    splatFilm = *fp;
-    cls = PathClass::L4;
-  } else if (s == 1) {
-    const PathVertex& c = camera_[t - 1];
-    if (!tempered && c.delta) return;
-    const float uPick = source.next(SampleStream::Connection);
-    const Vec2 uPos = source.next2(SampleStream::Connection);
-    lp = ctx_.lights.samplePoint(uPick, uPos);
-    sampled = lightVertex(lp);
-    const Vec3 d = sampled.sp.p - c.sp.p;
-    const float dist2 = glm::dot(d, d);
-    if (!(dist2 > 0.0f)) return;
-    const Vec3 w = d / std::sqrt(dist2);
-    const Color le = lp.delta ? ctx_.lights.intensity(lp.light, -w) : ctx_.lights.emitted(lp.sp, -w);
-    front = c.beta * le * sampled.beta * (cosAt(c, w) * cosAt(sampled, w) / dist2);
-    cameraEnd = &c;
-    wC = w;
-    lightSpan = std::span<PathVertex>(&sampled, 1);
-    cls = PathClass::L2;
-  } else {
-    const PathVertex& l = light_[s - 1];
-    const PathVertex& c = camera_[t - 1];
-    if (!tempered && (l.delta || c.delta)) return;
-    const Vec3 d = c.sp.p - l.sp.p;
-    const float dist2 = glm::dot(d, d);
-    if (!(dist2 > 0.0f)) return;
-    const Vec3 w = d / std::sqrt(dist2);
-    front = l.beta * c.beta * (cosAt(l, w) * cosAt(c, w) / dist2);
-    lightEnd = &l;
-    cameraEnd = &c;
-    wL = w;
-    wC = -w;
-    cls = PathClass::L5;
-  }
-  if (isBlack(front)) return;
-
-  auto value = [&](const Bsdf* bL, const Bsdf* bC) {
-    Color v = front;
-    if (lightEnd) v *= surfaceF(*lightEnd, wL, TransportMode::Importance, bL);
-    if (cameraEnd && !isBlack(v)) v *= surfaceF(*cameraEnd, wC, TransportMode::Radiance, bC);
-    return v;
-  };
-  const bool smoothEnd = (lightEnd && lightEnd->delta) || (cameraEnd && cameraEnd->delta);
-  const Color contrib = smoothEnd ? Color(0.0f) : value(nullptr, nullptr);
+  Connection c;
+  if (!joinEnds(s, t, film, source, c) || isBlack(c.front)) return;
+  const bool smoothEnd = (c.lightEnd && c.lightEnd->delta) || (c.cameraEnd && c.cameraEnd->delta);
+  const Color contrib = smoothEnd ? Color(0.0f) : endsValue(c, nullptr, nullptr);
   bool any = !isBlack(contrib);
-
-  // Tempered levels: the end BSDFs each level uses (none: the level's contribution is contrib).
-  // From the hottest level down: a zero there is a zero for every cooler level too (same
-  // geometry, narrower lobes), which skips most connections through smooth surfaces.
-  auto temperable = [](const PathVertex* v) { return v && v->bsdf->material().kind != MaterialKind::Lambert; };
-  const PathVertex* tl = temperable(lightEnd) ? lightEnd : nullptr;
-  const PathVertex* tc = temperable(cameraEnd) ? cameraEnd : nullptr;
-  const int levels = tempered && (tl || tc) ? tempering_->levels() : 0;
-  if (levels > 0) {
-    levelValue_.assign(size_t(levels), Color(0.0f));
-    levelOwn_.assign(size_t(levels), 0);
-    levelL_.resize(size_t(levels));
-    levelC_.resize(size_t(levels));
-    bool cooler = true;  // the levels below may still contribute
-    for (int k = levels - 1; k >= 0; --k) {
-      const auto roughL = tl ? tempering_->roughness(tl->bsdf->material(), k) : std::nullopt;
-      const auto roughC = tc ? tempering_->roughness(tc->bsdf->material(), k) : std::nullopt;
-      if (!roughL && !roughC) {
-        levelOwn_[size_t(k)] = 1;
-        continue;
-      }
-      if (!cooler) continue;
-      std::optional<Bsdf>&bL = levelL_[size_t(k)], &bC = levelC_[size_t(k)];
-      bL.reset();
-      bC.reset();
-      if (roughL) bL.emplace(tl->bsdf->material(), tl->sp.ns, tl->sp.ng, *roughL);
-      if (roughC) bC.emplace(tc->bsdf->material(), tc->sp.ns, tc->sp.ng, *roughC);
-      levelValue_[size_t(k)] = value(bL ? &*bL : nullptr, bC ? &*bC : nullptr);
-      cooler = !isBlack(levelValue_[size_t(k)]);
-      any |= cooler;
-    }
-  }
-  if (!any) return;
-
-  // One visibility ray for the untempered and every tempered contribution.
-  bool blocked = false;
-  if (s == 0) {
-    blocked = false;  // the camera subpath found the emitter itself
-  } else if (t == 1) {
-    blocked = ctx_.tracer.occludedToPoint(light_[s - 1].sp.p, light_[s - 1].sp.ng, ctx_.camera.position());
-  } else if (s == 1) {
-    blocked = lp.delta ? ctx_.tracer.occludedToPoint(cameraEnd->sp.p, cameraEnd->sp.ng, lp.sp.p)
-                       : ctx_.tracer.occluded(cameraEnd->sp.p, cameraEnd->sp.ng, lp.sp.p, lp.sp.ng);
-  } else {
-    blocked = ctx_.tracer.occluded(lightEnd->sp.p, lightEnd->sp.ng, cameraEnd->sp.p, cameraEnd->sp.ng);
-  }
-  if (blocked) return;
+  const int levels = temperedLevelValues(c, any);
+  if (!any || connectionBlocked(s, t, c)) return;
 
   float weight = 0.0f;
   if (!isBlack(contrib)) {
-    weight = misWeight(lightSpan, cameraSpan);
-    out.add(splatFilm, contrib * weight, cls);
-    if (observer_) observer_(lightSpan, cameraSpan, weight, contrib);
+    weight = misWeight(c.lightSpan, c.cameraSpan);
+    out.add(c.splatFilm, contrib * weight, c.cls);
+    if (observer_) observer_(c.lightSpan, c.cameraSpan, weight, contrib);
   }
-  if (!tempered) return;
+  if (tempering_ == nullptr) return;
   const double own = luminance(contrib * weight);
   if (levels == 0) {
     for (double& q : out.levelTargets) q += own;
@@ -313,7 +324,7 @@ void Bdpt::connect(int s, int t, const Vec2& film, SampleSource& source, PathSam
     if (levelOwn_[size_t(k)]) {
       out.levelTargets[size_t(k)] += own;
     } else if (!isBlack(levelValue_[size_t(k)])) {
-      const float w = misWeight(lightSpan, cameraSpan, bL ? &*bL : nullptr, bC ? &*bC : nullptr);
+      const float w = misWeight(c.lightSpan, c.cameraSpan, bL ? &*bL : nullptr, bC ? &*bC : nullptr);
       out.levelTargets[size_t(k)] += luminance(levelValue_[size_t(k)]) * double(w);
     }
   }
