@@ -191,13 +191,13 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
                  ->check(CLI::Range(1, 1 << 20))
                  ->capture_default_str();
   addReplicaOptions(cmd, o);
-  cmd.add_option("--large-step-probability", r.largeStepProbability, "pssmlt, mmlt: probability of a large step")
+  cmd.add_option("--large-step-probability", r.largeStepProbability, "pssmlt, mmlt, relt: probability of a large step")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  cmd.add_option("--small-step-min", r.smallStepMin, "Kelemen small step: smallest size s1")
+  cmd.add_option("--small-step-min", r.smallStepMin, "pssmlt, mmlt, erpt, relt: Kelemen small step, smallest size s1")
       ->check(CLI::Range(1e-7, 0.5))
       ->capture_default_str();
-  cmd.add_option("--small-step-max", r.smallStepMax, "Kelemen small step: largest size s2")
+  cmd.add_option("--small-step-max", r.smallStepMax, "pssmlt, mmlt, erpt, relt: Kelemen small step, largest size s2")
       ->check(CLI::Range(1e-7, 0.5))
       ->capture_default_str();
   cmd.add_option("--direct-emission-spp", o.directSpp,
@@ -212,7 +212,8 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
       ->check(kPositive);
   cmd.add_option("--erpt-max-consecutive", r.erptMaxConsecutive,
                  "erpt: stop depositing after this many mutations on one pixel (biased noise filter; 0 = off)")
-      ->check(CLI::Range(0, 1 << 20));
+      ->check(CLI::Range(0, 1 << 20))
+      ->capture_default_str();
   cmd.add_flag("--erpt-proposal-filter", r.erptProposalFilter,
                "erpt: scale pixels by blurred / actual proposed mutations (biased noise filter)");
   cmd.add_option("--chain-length", r.chainLength, "erpt: mutations per energy-redistribution chain")
@@ -222,14 +223,14 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--height", r.height, "image height (default: scene extras, else 256)")->check(CLI::Range(1, relt::kMaxImageSide));
   cmd.add_option("--max-depth", r.maxDepth, "maximum path segments (default: scene extras, else 8)")
       ->check(CLI::Range(1, relt::kMaxDepth));
-  cmd.add_option("--seed", r.seed, "random seed; the image depends only on it and the sample count")
+  cmd.add_option("--seed", r.seed, "random seed; with the other settings it fixes the image (not the rank or thread count)")
       ->check(kUnsigned64)
       ->capture_default_str();
   o.threads = cmd.add_option("--threads", r.threads,
                              "pt, bdpt, erpt: worker threads per rank (default: the cores the rank may use, shared "
                              "with the node's other ranks unless mpirun binds them); the image does not depend on it")
                   ->check(CLI::Range(1, relt::kMaxWorkers));
-  cmd.add_option("--camera", r.camera, "camera name (default: the first camera)");
+  cmd.add_option("--camera", r.camera, "camera name (default: the first perspective camera)");
   cmd.add_option("--exposure", r.exposure, "PNG exposure in stops")->check(finiteIn(-64.0, 64.0))->capture_default_str();
   cmd.add_option("--stall-timeout", o.stallTimeout,
                  "end the job with an error when a rank waits this many seconds for the others (0: never)")
@@ -353,8 +354,8 @@ int main(int argc, char** argv) {
   relt::mpi::installStopHandlers();
   const bool root = session.isRoot();
 
-  CLI::App app{"relt: replica-exchange light transport renderer (glTF 2.0 in, OpenEXR out), distributed with MPI.\n"
-               "Run under mpirun for several ranks; a plain run is one rank."};
+  CLI::App app{"relt: replica-exchange light transport renderer (glTF 2.0 in, OpenEXR or PNG out), distributed with MPI.\n"
+               "Run under mpirun for several ranks; a plain run is one rank (pt, bdpt and erpt use a thread per core)."};
   app.require_subcommand(1);
   Options o;
   CLI::App* render = app.add_subcommand("render", "render a scene");

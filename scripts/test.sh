@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Set up (packages, build) and run the whole test suite (labels: unit, stat, mpi).
+# Set up (packages, build) and run the whole test suite (labels: unit, stat, mpi, cluster).
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/setup.sh"
 cd "$BUILD_DIR"
