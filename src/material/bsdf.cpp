@@ -144,7 +144,7 @@ Bsdf::Value Bsdf::evaluateLobes(const Vec3& wo, const Vec3& wi, TransportMode mo
 }
 
 // Accepts a local direction if it lies on the side of ng the lobe requires (wo's side when sameSide).
-bool Bsdf::toWorldChecked(const Vec3& wi, bool sameSide, float go, Vec3* wiW) const {
+inline bool Bsdf::toWorldChecked(const Vec3& wi, bool sameSide, float go, Vec3* wiW) const {
   *wiW = frame_.toWorld(wi);
   const float gi = glm::dot(*wiW, ng_);
   return gi != 0.0f && (onPositiveSide(gi) == onPositiveSide(go)) == sameSide;

@@ -166,25 +166,85 @@ bool Bdpt::traceStrategy(int s, int t, const Vec2& film, SampleSource& source, P
   return out.splats.size() > before;
 }
 
+// One strategy's connection: everything but the end BSDFs (front), the ends and the directions
+// they are evaluated towards, where it splats, and its light and camera vertices (for s = 1 the
+// light point sampled, held here).
+struct BdptConnection {
+  Color front{0.0f};
+  const PathVertex *lightEnd = nullptr, *cameraEnd = nullptr;
+  Vec3 wL{0.0f}, wC{0.0f};
+  Vec2 splatFilm{0.0f};
+  PathClass cls{};
+  PathVertex sampled;
+  LightPoint lp;
+  std::span<PathVertex> lightSpan, cameraSpan;
+};
+
+namespace {
+
+// t = 1: light vertex l seen through the camera, splatted where it lands on the film.
+bool joinCamera(const PathContext& ctx, bool tempered, const PathVertex& l, BdptConnection& c) {
+  if (!tempered && l.isSurface() && l.delta) return false;
+  const Vec3 toCam = ctx.camera.position() - l.sp.p;
+  const float dist2 = glm::dot(toCam, toCam);
+  if (!(dist2 > 0.0f)) return false;
+  const Vec3 w = toCam / std::sqrt(dist2);
+  const auto fp = ctx.camera.filmPosition(-w);
+  if (!fp) return false;
+  const float cosCam = glm::dot(ctx.camera.forward(), -w);
+  c.front = l.beta * (cosAt(l, w) * cosCam / dist2 * ctx.camera.importance(-w));
+  if (l.isSurface()) {
+    c.lightEnd = &l;
+    c.wL = w;
+  } else {
+    c.front *= l.delta ? ctx.lights.intensity(l.light, w) : ctx.lights.emitted(l.sp, w);
+  }
+  c.splatFilm = *fp;
+  c.cls = PathClass::L4;
+  return true;
+}
+
+// s = 1: a light point sampled for camera vertex v (next-event estimation).
+bool joinLightSample(const PathContext& ctx, bool tempered, const PathVertex& v, SampleSource& source,
+                     BdptConnection& c) {
+  if (!tempered && v.delta) return false;
+  const float uPick = source.next(SampleStream::Connection);
+  const Vec2 uPos = source.next2(SampleStream::Connection);
+  c.lp = ctx.lights.samplePoint(uPick, uPos);
+  c.sampled = lightVertex(c.lp);
+  const Vec3 d = c.sampled.sp.p - v.sp.p;
+  const float dist2 = glm::dot(d, d);
+  if (!(dist2 > 0.0f)) return false;
+  const Vec3 w = d / std::sqrt(dist2);
+  const Color le = c.lp.delta ? ctx.lights.intensity(c.lp.light, -w) : ctx.lights.emitted(c.lp.sp, -w);
+  c.front = v.beta * le * c.sampled.beta * (cosAt(v, w) * cosAt(c.sampled, w) / dist2);
+  c.cameraEnd = &v;
+  c.wC = w;
+  c.lightSpan = std::span<PathVertex>(&c.sampled, 1);
+  c.cls = PathClass::L2;
+  return true;
+}
+
 // The geometry of strategy (s, t) without its end BSDFs: s = 0 the camera subpath hit an emitter,
 // t = 1 a light vertex seen by the camera, s = 1 a light point sampled for the camera end, else
 // the two subpaths' ends joined. False when it cannot contribute.
-bool Bdpt::joinEnds(int s, int t, const Vec2& film, SampleSource& source, Connection& c) {
-  const bool tempered = tempering_ != nullptr;
+bool joinEnds(const PathContext& ctx, bool tempered, std::span<PathVertex> light, std::span<PathVertex> camera,
+              const Vec2& film, SampleSource& source, BdptConnection& c) {
+  const int s = int(light.size()), t = int(camera.size());
   c.splatFilm = film;
-  c.lightSpan = std::span<PathVertex>(light_.data(), static_cast<size_t>(s));
-  c.cameraSpan = std::span<PathVertex>(camera_.data(), static_cast<size_t>(t));
+  c.lightSpan = light;
+  c.cameraSpan = camera;
   if (s == 0) {
-    const PathVertex& v = camera_[t - 1];
+    const PathVertex& v = camera[t - 1];
     if (!v.isSurface()) return false;
-    c.front = v.beta * ctx_.lights.emitted(v.sp, v.wo);
-    c.cls = anyDelta(c.cameraSpan.subspan(1, t - 2)) ? PathClass::L0 : PathClass::L1;
+    c.front = v.beta * ctx.lights.emitted(v.sp, v.wo);
+    c.cls = anyDelta(camera.subspan(1, t - 2)) ? PathClass::L0 : PathClass::L1;
     return true;
   }
-  if (t == 1) return joinCamera(light_[s - 1], c);
-  if (s == 1) return joinLightSample(camera_[t - 1], source, c);
-  const PathVertex& l = light_[s - 1];
-  const PathVertex& v = camera_[t - 1];
+  if (t == 1) return joinCamera(ctx, tempered, light[s - 1], c);
+  if (s == 1) return joinLightSample(ctx, tempered, camera[t - 1], source, c);
+  const PathVertex& l = light[s - 1];
+  const PathVertex& v = camera[t - 1];
   if (!tempered && (l.delta || v.delta)) return false;
   const Vec3 d = v.sp.p - l.sp.p;
   const float dist2 = glm::dot(d, d);
@@ -199,62 +259,35 @@ bool Bdpt::joinEnds(int s, int t, const Vec2& film, SampleSource& source, Connec
   return true;
 }
 
-// t = 1: light vertex l seen through the camera, splatted where it lands on the film.
-bool Bdpt::joinCamera(const PathVertex& l, Connection& c) const {
-  if (tempering_ == nullptr && l.isSurface() && l.delta) return false;
-  const Vec3 toCam = ctx_.camera.position() - l.sp.p;
-  const float dist2 = glm::dot(toCam, toCam);
-  if (!(dist2 > 0.0f)) return false;
-  const Vec3 w = toCam / std::sqrt(dist2);
-  const auto fp = ctx_.camera.filmPosition(-w);
-  if (!fp) return false;
-  const float cosCam = glm::dot(ctx_.camera.forward(), -w);
-  c.front = l.beta * (cosAt(l, w) * cosCam / dist2 * ctx_.camera.importance(-w));
-  if (l.isSurface()) {
-    c.lightEnd = &l;
-    c.wL = w;
-  } else {
-    c.front *= l.delta ? ctx_.lights.intensity(l.light, w) : ctx_.lights.emitted(l.sp, w);
-  }
-  c.splatFilm = *fp;
-  c.cls = PathClass::L4;
-  return true;
-}
-
-// s = 1: a light point sampled for camera vertex v (next-event estimation).
-bool Bdpt::joinLightSample(const PathVertex& v, SampleSource& source, Connection& c) const {
-  if (tempering_ == nullptr && v.delta) return false;
-  const float uPick = source.next(SampleStream::Connection);
-  const Vec2 uPos = source.next2(SampleStream::Connection);
-  c.lp = ctx_.lights.samplePoint(uPick, uPos);
-  c.sampled = lightVertex(c.lp);
-  const Vec3 d = c.sampled.sp.p - v.sp.p;
-  const float dist2 = glm::dot(d, d);
-  if (!(dist2 > 0.0f)) return false;
-  const Vec3 w = d / std::sqrt(dist2);
-  const Color le = c.lp.delta ? ctx_.lights.intensity(c.lp.light, -w) : ctx_.lights.emitted(c.lp.sp, -w);
-  c.front = v.beta * le * c.sampled.beta * (cosAt(v, w) * cosAt(c.sampled, w) / dist2);
-  c.cameraEnd = &v;
-  c.wC = w;
-  c.lightSpan = std::span<PathVertex>(&c.sampled, 1);
-  c.cls = PathClass::L2;
-  return true;
-}
-
 // front * f_L * f_C, with the given BSDFs at the ends (null: the vertex's own).
-Color Bdpt::endsValue(const Connection& c, const Bsdf* bL, const Bsdf* bC) const {
+inline Color endsValue(const BdptConnection& c, const Bsdf* bL, const Bsdf* bC) {
   Color v = c.front;
   if (c.lightEnd) v *= surfaceF(*c.lightEnd, c.wL, TransportMode::Importance, bL);
   if (c.cameraEnd && !isBlack(v)) v *= surfaceF(*c.cameraEnd, c.wC, TransportMode::Radiance, bC);
   return v;
 }
 
+// One visibility ray for the untempered and every tempered contribution (s = light vertices).
+bool connectionBlocked(const PathContext& ctx, int s, const BdptConnection& c) {
+  if (s == 0) return false;  // the camera subpath found the emitter itself
+  if (c.cameraSpan.size() == 1) {
+    const PathVertex& l = c.lightSpan.back();
+    return ctx.tracer.occludedToPoint(l.sp.p, l.sp.ng, ctx.camera.position());
+  }
+  if (s == 1)
+    return c.lp.delta ? ctx.tracer.occludedToPoint(c.cameraEnd->sp.p, c.cameraEnd->sp.ng, c.lp.sp.p)
+                      : ctx.tracer.occluded(c.cameraEnd->sp.p, c.cameraEnd->sp.ng, c.lp.sp.p, c.lp.sp.ng);
+  return ctx.tracer.occluded(c.lightEnd->sp.p, c.lightEnd->sp.ng, c.cameraEnd->sp.p, c.cameraEnd->sp.ng);
+}
+
+}  // namespace
+
 // Tempered levels: the end BSDFs each level uses (none: the level's contribution is the
 // untempered one) and their values. From the hottest level down: a zero there is a zero for every
 // cooler level too (same geometry, narrower lobes), which skips most connections through smooth
 // surfaces. Returns the levels filled (0: every level is untempered here); `any` is set when one
 // contributes.
-int Bdpt::temperedLevelValues(const Connection& c, bool& any) {
+int Bdpt::temperedLevelValues(const BdptConnection& c, bool& any) {
   auto temperable = [](const PathVertex* v) { return v && v->bsdf->material().kind != MaterialKind::Lambert; };
   const PathVertex* tl = temperable(c.lightEnd) ? c.lightEnd : nullptr;
   const PathVertex* tc = temperable(c.cameraEnd) ? c.cameraEnd : nullptr;
@@ -285,27 +318,18 @@ int Bdpt::temperedLevelValues(const Connection& c, bool& any) {
   return levels;
 }
 
-// One visibility ray for the untempered and every tempered contribution.
-bool Bdpt::connectionBlocked(int s, int t, const Connection& c) const {
-  if (s == 0) return false;  // the camera subpath found the emitter itself
-  if (t == 1) return ctx_.tracer.occludedToPoint(light_[s - 1].sp.p, light_[s - 1].sp.ng, ctx_.camera.position());
-  if (s == 1)
-    return c.lp.delta ? ctx_.tracer.occludedToPoint(c.cameraEnd->sp.p, c.cameraEnd->sp.ng, c.lp.sp.p)
-                      : ctx_.tracer.occluded(c.cameraEnd->sp.p, c.cameraEnd->sp.ng, c.lp.sp.p, c.lp.sp.ng);
-  return ctx_.tracer.occluded(c.lightEnd->sp.p, c.lightEnd->sp.ng, c.cameraEnd->sp.p, c.cameraEnd->sp.ng);
-}
-
 // A strategy's contribution is front * f_L * f_C: f_L, f_C are the BSDFs of the surface vertices
 // the connection joins (absent at a light or camera end) and front everything else. Tempering
 // re-evaluates only those two BSDFs and the MIS weight.
 void Bdpt::connect(int s, int t, const Vec2& film, SampleSource& source, PathSample& out) {
-  Connection c;
-  if (!joinEnds(s, t, film, source, c) || isBlack(c.front)) return;
+  BdptConnection c;
+  const std::span<PathVertex> light(light_.data(), size_t(s)), camera(camera_.data(), size_t(t));
+  if (!joinEnds(ctx_, tempering_ != nullptr, light, camera, film, source, c) || isBlack(c.front)) return;
   const bool smoothEnd = (c.lightEnd && c.lightEnd->delta) || (c.cameraEnd && c.cameraEnd->delta);
   const Color contrib = smoothEnd ? Color(0.0f) : endsValue(c, nullptr, nullptr);
   bool any = !isBlack(contrib);
-  const int levels = temperedLevelValues(c, any);
-  if (!any || connectionBlocked(s, t, c)) return;
+  const int levels = tempering_ != nullptr ? temperedLevelValues(c, any) : 0;
+  if (!any || connectionBlocked(ctx_, s, c)) return;
 
   float weight = 0.0f;
   if (!isBlack(contrib)) {

@@ -19,6 +19,8 @@ namespace relt {
 using ConnectionObserver = std::function<void(std::span<const PathVertex> light, std::span<const PathVertex> camera,
                                               float weight, const Color& contribution)>;
 
+struct BdptConnection;  // one strategy's connection (bdpt.cpp)
+
 class Bdpt {
  public:
   // roulette = false: subpaths continue until they leave the scene or reach their length (MMLT
@@ -49,25 +51,8 @@ class Bdpt {
   void generateCameraSubpath(const Vec2& film, SampleSource& source, size_t maxVertices);
   void generateLightSubpath(SampleSource& source, size_t maxVertices);
   void connect(int s, int t, const Vec2& film, SampleSource& source, PathSample& out);
-  // One strategy's connection: everything but the end BSDFs (front), the ends and the
-  // directions they are evaluated towards, where it splats, and its light and camera vertices
-  // (for s = 1 the light point sampled, held here).
-  struct Connection {
-    Color front{0.0f};
-    const PathVertex *lightEnd = nullptr, *cameraEnd = nullptr;
-    Vec3 wL{0.0f}, wC{0.0f};
-    Vec2 splatFilm{0.0f};
-    PathClass cls{};
-    PathVertex sampled;
-    LightPoint lp;
-    std::span<PathVertex> lightSpan, cameraSpan;
-  };
-  bool joinEnds(int s, int t, const Vec2& film, SampleSource& source, Connection& c);
-  bool joinCamera(const PathVertex& l, Connection& c) const;
-  bool joinLightSample(const PathVertex& v, SampleSource& source, Connection& c) const;
-  Color endsValue(const Connection& c, const Bsdf* bL, const Bsdf* bC) const;
-  int temperedLevelValues(const Connection& c, bool& any);
-  bool connectionBlocked(int s, int t, const Connection& c) const;
+  // The tempered levels' values of one connection (bdpt.cpp).
+  int temperedLevelValues(const BdptConnection& c, bool& any);
 
   const PathContext& ctx_;
   bool roulette_ = true;
