@@ -62,7 +62,7 @@ struct PassSaver {
     lastPrint = sofar.seconds;
     const int target = settings.directSpp > 0 ? settings.directSpp
                        : settings.seconds     ? 0
-                                              : autoDirectSpp(settings.mutationsPerPixel.value_or(16.0));
+                                              : autoDirectSpp(settings.mutationsPerPixel.value_or(kDefaultMutationsPerPixel));
     const double fraction = target > 0 ? double(sofar.spp) / target
                                        : std::min(1.0, sofar.seconds / (kDirectBudgetShare * settings.seconds.value_or(1.0)));
     const double rays = double(sofar.spp) * settings.width * settings.height;

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/words.h"
 #include "parallel/workers.h"
+#include "pss/chain_defaults.h"
 #include "pass_loop.h"
 
 namespace relt::mpi {
@@ -90,7 +91,7 @@ ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSett
   es.sizes = KelemenSizes{settings.smallStepMin, settings.smallStepMax};
   es.maxConsecutive = settings.erptMaxConsecutive;
   PtEvaluator eval(renderer.context(), settings.width, settings.height);
-  const int bootstrap = 100000;
+  const int bootstrap = kBootstrapPaths;
   ErptOutcome out;
   ErptCounters local;
   PassStart start;

@@ -178,11 +178,11 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--integrator", o.integrator, "light transport algorithm")
       ->check(CLI::IsMember({"pt", "bdpt", "pssmlt", "mmlt", "erpt", "relt"}))
       ->capture_default_str();
-  auto* spp = cmd.add_option("--spp", r.spp, "samples per pixel (default 16)")->check(CLI::Range(1, 1 << 24));
+  auto* spp = cmd.add_option("--spp", r.spp, "samples per pixel (default " + std::to_string(relt::kDefaultSpp) + ")")->check(CLI::Range(1, 1 << 24));
   auto* time = cmd.add_option("--time", r.seconds, "render for this many seconds (decided collectively)")
                    ->check(kPositive);
   auto* mpp = cmd.add_option("--mutations-per-pixel", r.mutationsPerPixel,
-                             "Markov-chain integrators: mutations per pixel (default 16)")
+                             "Markov-chain integrators: mutations per pixel (default " + CLI::detail::to_string(relt::kDefaultMutationsPerPixel) + ")")
                   ->check(CLI::Range(1e-3, 1e6));
   spp->excludes(time);
   mpp->excludes(spp);

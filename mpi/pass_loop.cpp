@@ -32,7 +32,7 @@ struct ProgressPrinter {
     printed = true;
     const double passes = at.passes + double(at.rows) / std::max(settings.height, 1);
     const double fraction = settings.seconds ? std::min(1.0, elapsed / *settings.seconds)
-                                             : passes / settings.spp.value_or(16);
+                                             : passes / settings.spp.value_or(kDefaultSpp);
     std::fprintf(stderr, tty ? "\r%s" : "%s\n", progressLine(fraction, elapsed, rate(elapsed), unit).c_str());
   }
   ~ProgressPrinter() {
@@ -76,7 +76,7 @@ PassPoint runPasses(const Session& session, const RenderSettings& settings, Pass
   auto since = [&] { return start.elapsed + std::chrono::duration<double>(Clock::now() - clockStart).count(); };
   const int height = settings.height;
   const bool timed = settings.seconds.has_value();
-  const int spp = settings.spp.value_or(timed ? 0 : 16);
+  const int spp = settings.spp.value_or(timed ? 0 : kDefaultSpp);
   const bool snapshots = hooks.snapshot && settings.snapshotEvery > 0.0;
   Pace pace;  // the passes' agreed durations: one that spanned a stall does not end the render early
   double passStart = start.elapsed, chunkStart = start.elapsed, lastSnapshot = start.elapsed;

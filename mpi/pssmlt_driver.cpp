@@ -23,7 +23,7 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 
 PssmltSettings pssmltSettings(const RenderSettings& settings) {
   PssmltSettings ps;
-  ps.mutationsPerPixel = settings.mutationsPerPixel.value_or(16.0);
+  ps.mutationsPerPixel = settings.mutationsPerPixel.value_or(kDefaultMutationsPerPixel);
   const double area = double(settings.width) * settings.height;
   ps.chains = chainsForBudget(settings.chains, settings.seconds.has_value(),
                               static_cast<uint64_t>(std::llround(ps.mutationsPerPixel * area)));

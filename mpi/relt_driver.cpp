@@ -206,7 +206,7 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
 
   const double area = double(settings.width) * settings.height;
   ReplicaSchedule schedule(area, pool.chainCount(), rs.exchangeInterval, settings.seconds,
-                           settings.mutationsPerPixel.value_or(16.0));
+                           settings.mutationsPerPixel.value_or(kDefaultMutationsPerPixel));
   RoundLoopStart resumed;
   // A bootstrap sample costs about what a mutation does: the agreed first guess of a round's
   // duration, until the lagged elapsed times of two rounds have come back.

@@ -26,7 +26,6 @@ inline float luminance(const Color& c) { return 0.2126f * c.x + 0.7152f * c.y + 
 inline bool isBlack(const Color& c) { return c.x <= 0.0f && c.y <= 0.0f && c.z <= 0.0f; }
 inline bool isFinite(const Color& c) { return std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z); }
 inline float maxComponent(const Color& c) { return std::max(c.x, std::max(c.y, c.z)); }
-inline float sqr(float x) { return x * x; }
 inline float safeSqrt(float x) { return std::sqrt(std::max(0.0f, x)); }
 
 // Orthonormal basis around a unit normal (Duff et al. 2017, branchless).
@@ -43,11 +42,6 @@ struct Frame {
   Vec3 toLocal(const Vec3& v) const { return Vec3(glm::dot(v, s), glm::dot(v, t), glm::dot(v, n)); }
   Vec3 toWorld(const Vec3& v) const { return s * v.x + t * v.y + n * v.z; }
 };
-
-// Local-frame trigonometry (z is the normal).
-inline float cosTheta(const Vec3& w) { return w.z; }
-inline float absCosTheta(const Vec3& w) { return std::abs(w.z); }
-inline bool sameHemisphere(const Vec3& a, const Vec3& b) { return a.z * b.z > 0.0f; }
 
 struct Bounds3 {
   Vec3 lo{INFINITY}, hi{-INFINITY};

@@ -64,12 +64,6 @@ inline Vec2 uniformTriangle(const Vec2& u) {
   return Vec2(b0, b1);
 }
 
-// MIS heuristics on (weighted) densities.
-inline float powerHeuristic(float f, float g) {
-  const float f2 = f * f;
-  return f2 == 0.0f ? 0.0f : f2 / (f2 + g * g);
-}
-
 // A discrete distribution sampled by inverting its CDF.
 class Distribution1D {
  public:

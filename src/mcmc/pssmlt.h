@@ -12,15 +12,16 @@
 #include "core/sampling.h"
 #include "film/film.h"
 #include "mcmc/pss_evaluator.h"
+#include "pss/chain_defaults.h"
 #include "pss/primary_sample_vector.h"
 
 namespace relt {
 
 struct PssmltSettings {
-  double mutationsPerPixel = 16.0;
+  double mutationsPerPixel = kDefaultMutationsPerPixel;
   int chains = 256;
-  float largeStepProbability = 0.3f;
-  int bootstrap = 100000;
+  float largeStepProbability = kDefaultLargeStepProbability;
+  int bootstrap = kBootstrapPaths;
   KelemenSizes sizes;
 };
 

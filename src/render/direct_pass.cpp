@@ -66,7 +66,7 @@ DirectPass renderDirectPass(Renderer& renderer, int firstRow, int rowStride, Fil
   ChunkedPass pass{renderer, firstRow, rowStride, film, reduce, start.seconds, Clock::now()};
   pass.done = uint32_t(start.spp);
   const bool automatic = s.directSpp == kDirectSppAuto;
-  const int fixed = !automatic ? s.directSpp : s.seconds ? 0 : autoDirectSpp(s.mutationsPerPixel.value_or(16.0));
+  const int fixed = !automatic ? s.directSpp : s.seconds ? 0 : autoDirectSpp(s.mutationsPerPixel.value_or(kDefaultMutationsPerPixel));
   if (automatic && start.spp == 0 && !probeSeesEmission(renderer, firstRow, rowStride, reduce)) {  // none in view
     renderer.keepDirectEmissionInChains();
     out.seconds = pass.elapsed();

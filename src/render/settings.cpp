@@ -59,7 +59,7 @@ nlohmann::json RenderSettings::toJson() const {
     j["small_step"] = {shortest(smallStepMin), shortest(smallStepMax)};
   }
   if (isMarkovChain(integrator)) {
-    if (!seconds) j["mutations_per_pixel"] = mutationsPerPixel.value_or(16.0);  // a timed render has no such count
+    if (!seconds) j["mutations_per_pixel"] = mutationsPerPixel.value_or(kDefaultMutationsPerPixel);  // a timed render has no such count
     if (integrator == Integrator::Relt) {
       const ReplicaSettings& r = replica;
       j["family"] = familyName(r.family.kind);

@@ -8,6 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "path/path_context.h"
+#include "pss/chain_defaults.h"
+#include "pss/kelemen.h"
 #include "replica/replica_settings.h"
 
 namespace relt {
@@ -20,6 +22,7 @@ inline bool isMarkovChain(Integrator i) {
 }
 
 constexpr int kDirectSppAuto = -1;
+constexpr int kDefaultSpp = 16;  // pt, bdpt, erpt when neither --spp nor --time is given
 
 struct RenderSettings {
   std::string scenePath;
@@ -28,7 +31,7 @@ struct RenderSettings {
   std::string stats;              // optional stats.json
   std::string trace;              // relt, optional: every rank's stepping time of each group round (JSON)
   Integrator integrator = Integrator::Bdpt;
-  std::optional<int> spp;         // samples per pixel (default when neither spp nor time: 16)
+  std::optional<int> spp;         // samples per pixel (default when neither spp nor time: kDefaultSpp)
   std::optional<double> seconds;  // time budget
   int width = 0, height = 0;      // resolved (scene extras unless overridden)
   int maxDepth = 0;
@@ -40,13 +43,13 @@ struct RenderSettings {
   // depend on them.
   int threads = 1;
   // Markov-chain integrators.
-  std::optional<double> mutationsPerPixel;  // default 16
+  std::optional<double> mutationsPerPixel;  // default kDefaultMutationsPerPixel
   int chains = 256;
   int chainLength = 100;  // erpt: mutations per chain (m)
   int erptMaxConsecutive = 0;        // erpt consecutive-sample filter (biased; 0 = off)
   bool erptProposalFilter = false;   // erpt proposed-mutations filter (biased)
-  float largeStepProbability = 0.3f;                  // pssmlt, mmlt
-  float smallStepMin = 1.0f / 1024, smallStepMax = 1.0f / 64;  // Kelemen small-step sizes s1, s2
+  float largeStepProbability = kDefaultLargeStepProbability;  // pssmlt, mmlt, relt
+  float smallStepMin = KelemenSizes{}.s1, smallStepMax = KelemenSizes{}.s2;  // Kelemen small-step sizes
   ReplicaSettings replica;      // relt: family, ladder, exchanges, placement
   double snapshotEvery = 0.0;  // Markov chains: write the image so far every this many seconds (0: never)
   // pssmlt, relt: estimate the directly seen emission (paths of one segment) apart, with this many

@@ -15,6 +15,7 @@
 
 #include "path/splat.h"
 #include "path/tempering.h"
+#include "pss/chain_defaults.h"
 #include "pss/kelemen.h"
 
 namespace relt {
@@ -43,7 +44,7 @@ struct FamilySettings {
   double regularisation = 0.0;        // tempered: rho_0 of reg(n) = rho_0 (1 + n)^-gamma (0 = off)
   double regularisationDecay = 1e-5;  // tempered: gamma
   KelemenSizes sizes;          // the chains' small-step sizes (kitaoka scales them per level)
-  float largeStepProbability = 0.3f;
+  float largeStepProbability = kDefaultLargeStepProbability;
 };
 
 class LevelFamily {
@@ -89,7 +90,7 @@ class LevelFamily {
     std::array<double, kPathClassCount> weight{};
     std::array<bool, kPathClassCount> estimates{};
     KelemenSizes sizes;
-    float largeStepProbability = 0.3f;
+    float largeStepProbability = kDefaultLargeStepProbability;
   };
   FamilyKind kind_;
   std::vector<Level> levels_;

@@ -64,7 +64,7 @@ Image renderChainsOrSamples(Renderer& renderer) {
     std::vector<Film> films(1, film);
     const double area = double(s.width) * s.height;
     const ReplicaSchedule schedule(area, pool.chainCount(), rs.exchangeInterval, std::nullopt,
-                                   s.mutationsPerPixel.value_or(16.0));
+                                   s.mutationsPerPixel.value_or(kDefaultMutationsPerPixel));
     LocalTransport transport;
     RoundLoopHooks hooks;
     hooks.elapsed = [] { return 0.0; };  // no timings: the placement of one rank never changes anyway
@@ -74,7 +74,7 @@ Image renderChainsOrSamples(Renderer& renderer) {
   if (isMarkovChain(s.integrator)) {
     // One process plays every rank: all bootstrap samples, all chains (as mpi/pssmlt_driver does).
     PssmltSettings ps;
-    ps.mutationsPerPixel = s.mutationsPerPixel.value_or(16.0);
+    ps.mutationsPerPixel = s.mutationsPerPixel.value_or(kDefaultMutationsPerPixel);
     const double area = double(s.width) * s.height;
     const auto total = static_cast<uint64_t>(std::llround(ps.mutationsPerPixel * area));
     ps.chains = chainsForBudget(s.chains, s.seconds.has_value(), total);
@@ -99,7 +99,7 @@ Image renderChainsOrSamples(Renderer& renderer) {
   const int spp = s.spp.value_or(16);
   if (s.integrator == Integrator::Erpt) {  // as mpi/erpt_driver does, all work units here
     PtEvaluator eval(renderer.context(), s.width, s.height);
-    const int bootstrap = 100000;
+    const int bootstrap = kBootstrapPaths;
     const double b = erptBootstrapSum(eval, s.seed, bootstrap, 0, 1) / bootstrap;
     ErptSettings es;
     es.chainLength = s.chainLength;
