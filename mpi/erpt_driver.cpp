@@ -7,6 +7,7 @@
 #include "core/words.h"
 #include "parallel/workers.h"
 #include "pss/chain_defaults.h"
+#include "render/chain_settings.h"
 #include "pass_loop.h"
 
 namespace relt::mpi {
@@ -86,10 +87,7 @@ PassFilm erptFilm(const RenderSettings& settings) {
 ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, PassFilm& film,
                     const std::function<void(const Image&)>& snapshot, const CheckpointPlan& plan,
                     const Resumed* resumed) {
-  ErptSettings es;
-  es.chainLength = settings.chainLength;
-  es.sizes = KelemenSizes{settings.smallStepMin, settings.smallStepMax};
-  es.maxConsecutive = settings.erptMaxConsecutive;
+  const ErptSettings es = erptSettings(settings);
   PtEvaluator eval(renderer.context(), settings.width, settings.height);
   const int bootstrap = kBootstrapPaths;
   ErptOutcome out;

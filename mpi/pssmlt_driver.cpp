@@ -12,6 +12,7 @@
 #include "core/words.h"
 #include "mcmc/chain_pool.h"
 #include "mcmc/round_schedule.h"
+#include "render/chain_settings.h"
 #include "schedule/pace.h"
 #include "schedule/schedule.h"
 
@@ -20,17 +21,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-PssmltSettings pssmltSettings(const RenderSettings& settings) {
-  PssmltSettings ps;
-  ps.mutationsPerPixel = settings.mutationsPerPixel.value_or(kDefaultMutationsPerPixel);
-  const double area = double(settings.width) * settings.height;
-  ps.chains = chainsForBudget(settings.chains, settings.seconds.has_value(),
-                              static_cast<uint64_t>(std::llround(ps.mutationsPerPixel * area)));
-  ps.largeStepProbability = settings.largeStepProbability;
-  ps.sizes = KelemenSizes{settings.smallStepMin, settings.smallStepMax};
-  return ps;
-}
 
 std::vector<int> ownedChains(const Session& session, int chains) {
   std::vector<int> mine;

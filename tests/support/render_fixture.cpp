@@ -5,6 +5,7 @@
 #include "mcmc/erpt.h"
 #include "mcmc/mmlt.h"
 #include "mcmc/pssmlt.h"
+#include "render/chain_settings.h"
 #include "render/direct_pass.h"
 #include "render/renderer.h"
 #include "replica/replica_pool.h"
@@ -73,11 +74,9 @@ Image renderChainsOrSamples(Renderer& renderer) {
   }
   if (isMarkovChain(s.integrator)) {
     // One process plays every rank: all bootstrap samples, all chains (as mpi/pssmlt_driver does).
-    PssmltSettings ps;
-    ps.mutationsPerPixel = s.mutationsPerPixel.value_or(kDefaultMutationsPerPixel);
+    const PssmltSettings ps = pssmltSettings(s);
     const double area = double(s.width) * s.height;
     const auto total = static_cast<uint64_t>(std::llround(ps.mutationsPerPixel * area));
-    ps.chains = chainsForBudget(s.chains, s.seconds.has_value(), total);
     std::vector<int> chains(static_cast<size_t>(ps.chains));
     for (int c = 0; c < ps.chains; ++c) chains[static_cast<size_t>(c)] = c;
     if (s.integrator == Integrator::Mmlt) {
@@ -96,13 +95,12 @@ Image renderChainsOrSamples(Renderer& renderer) {
     const double b = pooledNormaliser(sum, targets.size(), counters);
     return Renderer::resolve(film, film.data(), pssmltResolveDivisor(total, b, area));
   }
-  const int spp = s.spp.value_or(16);
+  const int spp = s.spp.value_or(kDefaultSpp);
   if (s.integrator == Integrator::Erpt) {  // as mpi/erpt_driver does, all work units here
     PtEvaluator eval(renderer.context(), s.width, s.height);
     const int bootstrap = kBootstrapPaths;
     const double b = erptBootstrapSum(eval, s.seed, bootstrap, 0, 1) / bootstrap;
-    ErptSettings es;
-    es.chainLength = s.chainLength;
+    const ErptSettings es = erptSettings(s);
     for (int k = 0; k < spp; ++k)
       for (int row = 0; row < s.height; ++row) erptRow(eval, es, b, s.seed, static_cast<uint64_t>(k), row, 1.0, film);
     return Renderer::resolve(film, film.data(), spp);
