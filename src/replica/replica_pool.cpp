@@ -5,6 +5,7 @@
 
 #include "mcmc/pssmlt.h"
 #include "replica/annealing.h"
+#include "replica/round_tail.h"
 
 namespace relt {
 namespace {
@@ -161,12 +162,12 @@ size_t ReplicaPool::messageLength(int group, int rank) const {
   return chains * size_t(levels()) + size_t(levels()) + 4;
 }
 
-// The requests travel as one number: bit 0 stop, bit 1 save.
 namespace {
-double requestBits(bool stop, bool save) { return (stop ? 1.0 : 0.0) + (save ? 2.0 : 0.0); }
-void readRequests(double bits, RoundAgreement& agreed) {
-  agreed.stop |= (int(bits) & 1) != 0;
-  agreed.save |= (int(bits) & 2) != 0;
+// What a rank's tail adds to the round's agreement: the latest elapsed time and any request.
+void agreeOn(const RoundTail& tail, RoundAgreement& agreed) {
+  agreed.elapsed = std::max(agreed.elapsed, tail.elapsed);
+  agreed.stop |= tail.stop;
+  agreed.save |= tail.save;
 }
 }  // namespace
 
@@ -178,30 +179,33 @@ std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double 
     if (!localDecisions())
       for (size_t i = 0; i < chains_.size(); ++i)
         if (groupOf(hosted()[i]) == group) msg.insert(msg.end(), chains_[i].targets(), chains_[i].targets() + levels());
-    msg.insert(msg.end(), large.sum.begin(), large.sum.end());
   }
-  msg.push_back(double(large.count));
-  msg.push_back(roundSeconds);
-  msg.push_back(requestBits(stop, save));
-  msg.push_back(elapsed);
+  RoundTail tail;
+  if (active_) tail.largeSums = large.sum;
+  tail.largeCount = double(large.count);
+  tail.seconds = roundSeconds;
+  tail.stop = stop;
+  tail.save = save;
+  tail.elapsed = elapsed;
+  appendRoundTail(tail, msg);
   posted_[size_t(group)].push_back({large, epoch_, placementVersion_[size_t(group)]});
   large = LargeStepSums(levels());
   return msg;
 }
 
 std::vector<double> ReplicaPool::messageTail(const std::vector<double>& message) const {
-  const size_t n = active_ ? size_t(levels()) + 4 : 4;
+  const size_t n = roundTailLength(levels(), active_);
   if (message.size() < n) throw std::logic_error("a round message shorter than its tail");
   return std::vector<double>(message.end() - std::ptrdiff_t(n), message.end());
 }
 
 std::vector<double> ReplicaPool::tail(const LargeStepSums& large, double elapsed) const {
+  RoundTail tail;  // no seconds (load-balance windows start afresh) and no requests
+  if (active_) tail.largeSums = large.sum;
+  tail.largeCount = double(large.count);
+  tail.elapsed = elapsed;
   std::vector<double> t;
-  if (active_) t = large.sum;
-  t.push_back(double(large.count));
-  t.push_back(0.0);  // seconds: load-balance windows start afresh
-  t.push_back(0.0);  // stop
-  t.push_back(elapsed);
+  appendRoundTail(tail, t);
   return t;
 }
 
@@ -234,10 +238,7 @@ RoundAgreement ReplicaPool::finishRound(int group, const std::vector<std::vector
     std::vector<std::vector<double>> tails;
     for (const std::vector<double>& msg : messages) tails.push_back(messageTail(msg));
     agreed.fresh = true;
-    for (const std::vector<double>& t : tails) {
-      agreed.elapsed = std::max(agreed.elapsed, t[t.size() - 1]);
-      readRequests(t[t.size() - 2], agreed);
-    }
+    for (const std::vector<double>& t : tails) agreeOn(readRoundTail(t, m, active_), agreed);
     held.push_back(std::move(tails));
     for (size_t i = 0; i < due; ++i) {
       readBack(group, held.front(), agreed);
@@ -297,20 +298,18 @@ void ReplicaPool::readBack(int group, const std::vector<std::vector<double>>& ta
   std::vector<double>& squares = windowSquares_[size_t(group)];
   // Rounds restored from a checkpoint carry no stepping times: they are not timing data.
   bool timed = false;
-  for (const std::vector<double>& t : tails) timed |= t[t.size() - 3] > 0.0;
+  for (const std::vector<double>& t : tails) timed |= readRoundTail(t, m, active_).seconds > 0.0;
   if (samePlacement && timed) windowRounds_[size_t(group)] += 1.0;
   for (size_t r = 0; r < tails.size(); ++r) {
-    const std::vector<double>& t = tails[r];
-    const size_t n = t.size();
-    agreed.elapsed = std::max(agreed.elapsed, t[n - 1]);
-    readRequests(t[n - 2], agreed);
+    const RoundTail t = readRoundTail(tails[r], m, active_);
+    agreeOn(t, agreed);
     if (samePlacement) {
-      window[r] += t[n - 3];
-      squares[r] += t[n - 3] * t[n - 3];
+      window[r] += t.seconds;
+      squares[r] += t.seconds * t.seconds;
     }
     if (!active_ || !current) continue;
-    for (int k = 0; k < m; ++k) largeSum_[size_t(k)] += t[size_t(k)];
-    largeCount_ += t[size_t(m)];
+    for (int k = 0; k < m; ++k) largeSum_[size_t(k)] += t.largeSums[size_t(k)];
+    largeCount_ += t.largeCount;
   }
   agreedElapsed_ = agreed.elapsed;
 }

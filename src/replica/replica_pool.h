@@ -148,7 +148,7 @@ class ReplicaPool {
   // Reads back every rank's message tail (large-step sums and count, seconds, stop, elapsed) of the
   // group's oldest round not read back yet.
   void readBack(int group, const std::vector<std::vector<double>>& tails, RoundAgreement& agreed);
-  // A message's tail: its last levels() + 4 numbers (4 when inactive).
+  // A message's tail (replica/round_tail.h): its last levels() + 4 numbers (4 when inactive).
   std::vector<double> messageTail(const std::vector<double>& message) const;
   std::vector<double> tail(const LargeStepSums& large, double elapsed) const;
   // A hosted chain as it travels to another rank or into a checkpoint: ReplicaChain::serialize(),
