@@ -93,14 +93,10 @@ ErptCounters erptRow(PtEvaluator& eval, const ErptSettings& settings, double nor
           deposit(film, proposal, proposed, a * energyPerDeposit * filmWeight);
           deposit(film, current, energy, (1.0f - a) * energyPerDeposit * filmWeight);
         }
-        if (rng.uniform() < a) {
-          u.accept();
-          std::swap(current, proposal);
+        if (keepOrRevert(rng.uniform() < a, u, current, proposal)) {
           energy = proposed;
           currentPixel = proposedPixel;
           ++counters.accepted;
-        } else {
-          u.reject();
         }
       }
     }

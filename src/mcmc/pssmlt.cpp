@@ -53,13 +53,9 @@ void McmcChain::finishStep(bool large, float proposed, Film& film) {
   // below 2^-126 (mmlt's long paths) is a subnormal float whose reciprocal overflows float.
   if (target_ > 0.0f && a < 1.0f) film.addSample(current_, (1.0 - double(a)) / double(target_));
   if (a > 0.0f) film.addSample(proposal_, double(a) / double(proposed));
-  if (rng_.uniform() < a) {
-    u_.accept();
-    std::swap(current_, proposal_);
+  if (keepOrRevert(rng_.uniform() < a, u_, current_, proposal_)) {
     target_ = proposed;
     (large ? counters_.largeAccepted : counters_.smallAccepted)++;
-  } else {
-    u_.reject();
   }
 }
 

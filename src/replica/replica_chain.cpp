@@ -117,13 +117,7 @@ void ReplicaChain::step(const LevelEvaluator& eval, const LevelEstimator* estima
     if (current_.q[k] > 0.0 && a < 1.0) estimator->splat(current_.path, current_.q.data(), level_, 1.0 - a, *film);
     if (a > 0.0) estimator->splat(proposal_.path, proposal_.q.data(), level_, a, *film);
   }
-  if (rng_.uniformDouble() < a) {
-    u_.accept();
-    std::swap(current_, proposal_);
-    (isLarge ? c.largeAccepted : c.smallAccepted)++;
-  } else {
-    u_.reject();
-  }
+  if (keepOrRevert(rng_.uniformDouble() < a, u_, current_, proposal_)) (isLarge ? c.largeAccepted : c.smallAccepted)++;
 }
 
 }  // namespace relt
