@@ -287,8 +287,17 @@ void checkReplicaOptions(Options& o) {
     throw relt::InputError("", "--exchange", "permutation needs at most 12 levels (its cost is M 2^M)");
 }
 
+// An output of compare or average must be named for the one format it is written in.
+void checkNamedAs(const std::string& path, const char* option, relt::ImageFormat format) {
+  if (path.empty() || relt::imageFormatOf(path) == format) return;
+  throw relt::InputError(path, option, format == relt::ImageFormat::Exr ? "written as OpenEXR: name it .exr"
+                                                                         : "written as PNG: name it .png");
+}
+
 // relt compare: the figures as JSON on stdout, the signed difference and its magnitude if asked.
 int runCompare(const Options& o, bool root) {
+  checkNamedAs(o.compareDiff, "--diff", relt::ImageFormat::Exr);
+  checkNamedAs(o.comparePng, "--png", relt::ImageFormat::Png);
   const relt::Image a = relt::readExr(o.compareA), b = relt::readExr(o.compareB);
   const relt::ImageComparison c = relt::compareImages(a, b, o.compareA, o.compareB);
   if (!root) return 0;
@@ -306,6 +315,8 @@ int runCompare(const Options& o, bool root) {
 
 // relt average: the pixel-by-pixel mean of the inputs.
 int runAverage(const Options& o, bool root) {
+  checkNamedAs(o.averageOutput, "--output", relt::ImageFormat::Exr);
+  checkNamedAs(o.averagePng, "--png", relt::ImageFormat::Png);
   std::vector<relt::Image> images;
   for (const std::string& path : o.averageInputs) images.push_back(relt::readExr(path));
   const relt::Image mean = relt::averageImages(images, o.averageInputs);
