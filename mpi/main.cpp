@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <optional>
 
@@ -24,33 +25,26 @@ namespace {
 constexpr int kExitInput = 2;
 constexpr int kExitInternal = 1;
 
-// A finite number above zero; CLI::PositiveNumber names its range up to the largest double.
-const CLI::Validator kPositive(
-    [](std::string& text) {
-      double v = 0.0;
-      try {
-        v = std::stod(text);
-      } catch (const std::exception&) {
-        return "must be a number > 0, got " + text;
-      }
-      return std::isfinite(v) && v > 0.0 ? std::string() : "must be a number > 0, got " + text;
-    },
-    "> 0");
-
-// A finite number in [lo, hi]; CLI::Range lets NaN through.
-CLI::Validator finiteIn(double lo, double hi) {
-  const std::string range = "in [" + CLI::detail::to_string(lo) + ", " + CLI::detail::to_string(hi) + "]";
+// A finite number that `accepts` takes, described as `range` ("> 0"): CLI::Range lets NaN
+// through and CLI::PositiveNumber names its range up to the largest double.
+CLI::Validator finiteNumber(const std::function<bool(double)>& accepts, const std::string& range) {
   return CLI::Validator(
-      [lo, hi, range](std::string& text) {
-        double v = 0.0;
+      [accepts, range](std::string& text) {
+        double v = std::nan("");
         try {
           v = std::stod(text);
         } catch (const std::exception&) {
-          return "must be a number " + range + ", got " + text;
         }
-        return std::isfinite(v) && v >= lo && v <= hi ? std::string() : "must be a number " + range + ", got " + text;
+        return std::isfinite(v) && accepts(v) ? std::string() : "must be a number " + range + ", got " + text;
       },
       range);
+}
+
+const CLI::Validator kPositive = finiteNumber([](double v) { return v > 0.0; }, "> 0");
+
+CLI::Validator finiteIn(double lo, double hi) {
+  return finiteNumber([lo, hi](double v) { return v >= lo && v <= hi; },
+                      "in [" + CLI::detail::to_string(lo) + ", " + CLI::detail::to_string(hi) + "]");
 }
 
 // An unsigned 64-bit integer in decimal (CLI11 takes -1 as 2^64 - 1 and clamps what is larger).

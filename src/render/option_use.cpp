@@ -15,9 +15,9 @@ struct OptionUse {
 };
 
 const std::vector<OptionUse>& optionUses() {
-  const std::vector<Integrator> passes = {I::PathTracing, I::Bdpt, I::Erpt}, chains = {I::Pssmlt, I::Mmlt, I::Relt};
-  const std::vector<Integrator> kelemen = {I::Pssmlt, I::Mmlt, I::Erpt, I::Relt};
-  static const std::vector<OptionUse> uses = [&] {
+  static const std::vector<OptionUse> uses = [] {
+    const std::vector<Integrator> passes = {I::PathTracing, I::Bdpt, I::Erpt}, chains = {I::Pssmlt, I::Mmlt, I::Relt};
+    const std::vector<Integrator> kelemen = {I::Pssmlt, I::Mmlt, I::Erpt, I::Relt};
     std::vector<OptionUse> u = {
         {"--spp", passes, "the Markov-chain integrators take --mutations-per-pixel"},
         {"--mutations-per-pixel", chains, "the others take --spp"},
