@@ -5,7 +5,6 @@
 
 #include "mcmc/pssmlt.h"
 #include "replica/annealing.h"
-#include "replica/round_tail.h"
 
 namespace relt {
 namespace {
@@ -180,9 +179,7 @@ std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double 
       for (size_t i = 0; i < chains_.size(); ++i)
         if (groupOf(hosted()[i]) == group) msg.insert(msg.end(), chains_[i].targets(), chains_[i].targets() + levels());
   }
-  RoundTail tail;
-  if (active_) tail.largeSums = large.sum;
-  tail.largeCount = double(large.count);
+  RoundTail tail = tailOf(large);
   tail.seconds = roundSeconds;
   tail.stop = stop;
   tail.save = save;
@@ -194,15 +191,19 @@ std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double 
 }
 
 std::vector<double> ReplicaPool::messageTail(const std::vector<double>& message) const {
-  const size_t n = roundTailLength(levels(), active_);
-  if (message.size() < n) throw std::logic_error("a round message shorter than its tail");
-  return std::vector<double>(message.end() - std::ptrdiff_t(n), message.end());
+  const std::span<const double> tail = roundTailOf(message, levels(), active_);
+  return std::vector<double>(tail.begin(), tail.end());
+}
+
+RoundTail ReplicaPool::tailOf(const LargeStepSums& large) const {
+  RoundTail tail;
+  if (active_) tail.largeSums = large.sum;
+  tail.largeCount = double(large.count);
+  return tail;
 }
 
 std::vector<double> ReplicaPool::tail(const LargeStepSums& large, double elapsed) const {
-  RoundTail tail;  // no seconds (load-balance windows start afresh) and no requests
-  if (active_) tail.largeSums = large.sum;
-  tail.largeCount = double(large.count);
+  RoundTail tail = tailOf(large);  // no seconds (load-balance windows start afresh) and no requests
   tail.elapsed = elapsed;
   std::vector<double> t;
   appendRoundTail(tail, t);
@@ -297,11 +298,15 @@ void ReplicaPool::readBack(int group, const std::vector<std::vector<double>>& ta
   std::vector<double>& window = windowSeconds_[size_t(group)];
   std::vector<double>& squares = windowSquares_[size_t(group)];
   // Rounds restored from a checkpoint carry no stepping times: they are not timing data.
+  std::vector<RoundTail> read;
   bool timed = false;
-  for (const std::vector<double>& t : tails) timed |= readRoundTail(t, m, active_).seconds > 0.0;
+  for (const std::vector<double>& t : tails) {
+    read.push_back(readRoundTail(t, m, active_));
+    timed |= read.back().seconds > 0.0;
+  }
   if (samePlacement && timed) windowRounds_[size_t(group)] += 1.0;
-  for (size_t r = 0; r < tails.size(); ++r) {
-    const RoundTail t = readRoundTail(tails[r], m, active_);
+  for (size_t r = 0; r < read.size(); ++r) {
+    const RoundTail& t = read[r];
     agreeOn(t, agreed);
     if (samePlacement) {
       window[r] += t.seconds;

@@ -23,6 +23,7 @@
 #include "replica/load_balance.h"
 #include "replica/replica_settings.h"
 #include "replica/replica_chain.h"
+#include "replica/round_tail.h"
 
 namespace relt {
 
@@ -151,6 +152,8 @@ class ReplicaPool {
   // A message's tail (replica/round_tail.h): its last levels() + 4 numbers (4 when inactive).
   std::vector<double> messageTail(const std::vector<double>& message) const;
   std::vector<double> tail(const LargeStepSums& large, double elapsed) const;
+  // A round's large-step part of its tail (the sums only while active).
+  RoundTail tailOf(const LargeStepSums& large) const;
   // A hosted chain as it travels to another rank or into a checkpoint: ReplicaChain::serialize(),
   // then whether it owes a re-evaluation under targets that moved since its group last ran (which
   // draws from its stream), then its round-trip phase.

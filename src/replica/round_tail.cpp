@@ -18,11 +18,15 @@ void appendRoundTail(const RoundTail& tail, std::vector<double>& message) {
   message.push_back(tail.elapsed);
 }
 
-RoundTail readRoundTail(std::span<const double> message, int levels, bool active) {
+std::span<const double> roundTailOf(std::span<const double> message, int levels, bool active) {
   const size_t n = roundTailLength(levels, active);
   if (message.size() < n) throw std::logic_error("a round message shorter than its tail");
-  const std::span<const double> t = message.last(n);
-  const size_t sums = n - 4;
+  return message.last(n);
+}
+
+RoundTail readRoundTail(std::span<const double> message, int levels, bool active) {
+  const std::span<const double> t = roundTailOf(message, levels, active);
+  const size_t sums = t.size() - 4;
   RoundTail tail;
   tail.largeSums = t.first(sums);
   tail.largeCount = t[sums];

@@ -23,6 +23,10 @@ inline size_t roundTailLength(int levels, bool active) { return (active ? size_t
 // Appends a tail to `message` (largeSums must hold `levels` numbers when active, none otherwise).
 void appendRoundTail(const RoundTail& tail, std::vector<double>& message);
 
+// The last roundTailLength(levels, active) numbers of `message`. Throws std::logic_error on a
+// shorter message.
+std::span<const double> roundTailOf(std::span<const double> message, int levels, bool active);
+
 // The tail at the end of `message`, which ends with one of roundTailLength(levels, active)
 // numbers; its largeSums view `message`. Throws std::logic_error on a shorter message.
 RoundTail readRoundTail(std::span<const double> message, int levels, bool active);
