@@ -162,11 +162,14 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& woW, const Vec2& u, float uLo
   if (material_->kind == MaterialKind::Lambert) return sampleLambert(woW, go, u);
   const Vec3 wo = frame_.toLocal(woW);
   if (go == 0.0f || wo.z == 0.0f) return std::nullopt;
-  if (material_->kind == MaterialKind::Conductor) return sampleConductor(woW, wo, go, u, mode);
+  const float side = wo.z > 0.0f ? 1.0f : -1.0f;
+  const Outgoing out{woW, wo, Vec3(wo.x, wo.y, std::abs(wo.z)), side, go};
+  if (material_->kind == MaterialKind::Conductor) return sampleConductor(out, u, mode);
   // Dielectric: +z is outside. wo's shading side must match its geometric side (it picks eta).
   if (wo.z * go <= 0.0f) return std::nullopt;
-  if (alpha_ == 0.0f) return sampleSmoothDielectric(wo, go, uLobe, mode);
-  return sampleRoughDielectric(woW, wo, go, u, uLobe, mode);
+  const float etaRel = side > 0.0f ? material_->ior : 1.0f / material_->ior;  // eta on the far side / on wo's
+  if (alpha_ == 0.0f) return sampleSmoothDielectric(out, etaRel, uLobe, mode);
+  return sampleRoughDielectric(out, etaRel, u, uLobe, mode);
 }
 
 std::optional<BsdfSample> Bsdf::sampleLambert(const Vec3& woW, float go, const Vec2& u) const {
@@ -180,10 +183,10 @@ std::optional<BsdfSample> Bsdf::sampleLambert(const Vec3& woW, float go, const V
   return BsdfSample{wiW, material_->baseColor * kInvPi, std::abs(wi.z) * kInvPi, false};
 }
 
-std::optional<BsdfSample> Bsdf::sampleConductor(const Vec3& woW, const Vec3& wo, float go, const Vec2& u,
-                                                TransportMode mode) const {
-  const float side = wo.z > 0.0f ? 1.0f : -1.0f;
-  const Vec3 woUp(wo.x, wo.y, std::abs(wo.z));  // wo mirrored into the upper hemisphere
+std::optional<BsdfSample> Bsdf::sampleConductor(const Outgoing& out, const Vec2& u, TransportMode mode) const {
+  const Vec3& wo = out.local;
+  const Vec3& woUp = out.up;
+  const float go = out.go;
   Vec3 wiW;
   if (alpha_ == 0.0f) {
     // Perfect mirror: the delta's coefficient is F, divided by |cos wi| per BsdfSample's contract.
@@ -198,16 +201,16 @@ std::optional<BsdfSample> Bsdf::sampleConductor(const Vec3& woW, const Vec3& wo,
   if (cosOm <= 0.0f) return std::nullopt;
   Vec3 wi = 2.0f * cosOm * m - woUp;  // reflect about m (Walter Eq. 39)
   if (wi.z <= 0.0f) return std::nullopt;
-  wi.z *= side;
+  wi.z *= out.side;
   if (!toWorldChecked(wi, true, go, &wiW)) return std::nullopt;
-  return valuedSample(woW, wiW, mode);
+  return valuedSample(out.world, wiW, mode);
 }
 
-std::optional<BsdfSample> Bsdf::sampleSmoothDielectric(const Vec3& wo, float go, float uLobe, TransportMode mode) const {
+std::optional<BsdfSample> Bsdf::sampleSmoothDielectric(const Outgoing& out, float etaRel, float uLobe,
+                                                       TransportMode mode) const {
   const Material& mat = *material_;
-  const float side = wo.z > 0.0f ? 1.0f : -1.0f;
-  const float woUpZ = std::abs(wo.z);
-  const float etaRel = side > 0.0f ? mat.ior : 1.0f / mat.ior;  // eta on the far side / eta on wo's side
+  const Vec3& wo = out.local;
+  const float woUpZ = out.up.z, side = out.side, go = out.go;
   const float fresnel = fresnelDielectric(wo.z, mat.ior);
   Vec3 wiW;
   if (uLobe < fresnel) {
@@ -228,11 +231,9 @@ std::optional<BsdfSample> Bsdf::sampleSmoothDielectric(const Vec3& wo, float go,
   return BsdfSample{wiW, f, t, true};
 }
 
-std::optional<BsdfSample> Bsdf::sampleRoughDielectric(const Vec3& woW, const Vec3& wo, float go, const Vec2& u,
-                                                      float uLobe, TransportMode mode) const {
-  const float side = wo.z > 0.0f ? 1.0f : -1.0f;
-  const Vec3 woUp(wo.x, wo.y, std::abs(wo.z));  // wo mirrored into the upper hemisphere
-  const float etaRel = side > 0.0f ? material_->ior : 1.0f / material_->ior;
+std::optional<BsdfSample> Bsdf::sampleRoughDielectric(const Outgoing& out, float etaRel, const Vec2& u, float uLobe,
+                                                      TransportMode mode) const {
+  const Vec3& woUp = out.up;
   const MicrofacetDistribution dist(rough_.distribution, alpha_);
   const Vec3 mUp = dist.sampleVisible(woUp, u);
   const float cosOm = glm::dot(woUp, mUp);
@@ -249,10 +250,10 @@ std::optional<BsdfSample> Bsdf::sampleRoughDielectric(const Vec3& woW, const Vec
     wi = -woUp / etaRel + (cosOm / etaRel - std::sqrt(1.0f - sin2T)) * mUp;
     if (wi.z >= 0.0f) return std::nullopt;
   }
-  wi.z *= side;
+  wi.z *= out.side;
   Vec3 wiW;
-  if (!toWorldChecked(wi, uLobe < fresnel, go, &wiW)) return std::nullopt;
-  return valuedSample(woW, wiW, mode);
+  if (!toWorldChecked(wi, uLobe < fresnel, out.go, &wiW)) return std::nullopt;
+  return valuedSample(out.world, wiW, mode);
 }
 
 }  // namespace relt

@@ -72,12 +72,18 @@ class Bsdf {
 
  private:
   Value evaluateLobes(const Vec3& wo, const Vec3& wi, TransportMode mode) const;
-  // sample() per lobe; wo is local, go = dot(woW, ng).
+  // sample()'s outgoing direction: world and local, mirrored into the upper hemisphere (up),
+  // which side of the shading normal it is on (side, +-1) and go = dot(world, ng).
+  struct Outgoing {
+    Vec3 world, local, up;
+    float side, go;
+  };
+  // sample() per lobe (etaRel: eta on the far side over eta on wo's side).
   std::optional<BsdfSample> sampleLambert(const Vec3& woW, float go, const Vec2& u) const;
-  std::optional<BsdfSample> sampleConductor(const Vec3& woW, const Vec3& wo, float go, const Vec2& u,
-                                            TransportMode mode) const;
-  std::optional<BsdfSample> sampleSmoothDielectric(const Vec3& wo, float go, float uLobe, TransportMode mode) const;
-  std::optional<BsdfSample> sampleRoughDielectric(const Vec3& woW, const Vec3& wo, float go, const Vec2& u, float uLobe,
+  std::optional<BsdfSample> sampleConductor(const Outgoing& out, const Vec2& u, TransportMode mode) const;
+  std::optional<BsdfSample> sampleSmoothDielectric(const Outgoing& out, float etaRel, float uLobe,
+                                                   TransportMode mode) const;
+  std::optional<BsdfSample> sampleRoughDielectric(const Outgoing& out, float etaRel, const Vec2& u, float uLobe,
                                                   TransportMode mode) const;
   bool toWorldChecked(const Vec3& wi, bool sameSide, float go, Vec3* wiW) const;
   std::optional<BsdfSample> valuedSample(const Vec3& woW, const Vec3& wiW, TransportMode mode) const;
