@@ -96,7 +96,9 @@ void startStallWatchdog(double timeoutSeconds) {
 }
 
 Session::Session(int* argc, char*** argv) {
-  MPI_Init(argc, argv);
+  // Worker threads (--threads) never call MPI; the main thread, worker 0, makes every call.
+  int provided = MPI_THREAD_SINGLE;
+  MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
   // A failed rank must end the job with an error, never hang it.
   MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_ARE_FATAL);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);

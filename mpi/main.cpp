@@ -221,7 +221,7 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
       ->check(kUnsigned64)
       ->capture_default_str();
   o.threads = cmd.add_option("--threads", r.threads,
-                             "pt, bdpt, erpt: worker threads per rank (default: the cores the rank may use, shared "
+                             "worker threads per rank (default: the cores the rank may use, shared "
                              "with the node's other ranks unless mpirun binds them); the image does not depend on it")
                   ->check(CLI::Range(1, relt::kMaxWorkers));
   cmd.add_option("--camera", r.camera, "camera name (default: the first perspective camera)");
@@ -345,10 +345,9 @@ void checkRenderOptions(Options& o) {
   o.render.directSpp = o.directSpp == "auto" ? relt::kDirectSppAuto : std::stoi(o.directSpp);
 }
 
-// --threads on auto (chain integrators: one); collective, as ranks on a node are counted.
-int threadsOnAuto(const relt::RenderSettings& r) {
+// --threads on auto; collective, as ranks on a node are counted.
+int threadsOnAuto() {
   const int ranksOnNode = relt::mpi::ranksOnThisNode();
-  if (relt::isMarkovChain(r.integrator)) return 1;
   return relt::defaultThreads(relt::coresAvailable(), relt::coresOnline(), ranksOnNode);
 }
 
@@ -404,7 +403,7 @@ int main(int argc, char** argv) {
     checkOutputNames(o.render);
     checkReplicaOptions(o);
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
-    if (o.threads->count() == 0) o.render.threads = threadsOnAuto(o.render);
+    if (o.threads->count() == 0) o.render.threads = threadsOnAuto();
     relt::mpi::startStallWatchdog(o.stallTimeout);
     relt::mpi::runRender(session, o.render, o.checkpoint);
     return 0;

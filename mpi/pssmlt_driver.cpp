@@ -12,6 +12,7 @@
 #include "core/words.h"
 #include "mcmc/chain_pool.h"
 #include "mcmc/round_schedule.h"
+#include "parallel/workers.h"
 #include "render/chain_settings.h"
 #include "schedule/pace.h"
 #include "schedule/schedule.h"
@@ -78,8 +79,8 @@ class ChainRender {
   const PssmltSettings ps_;
   const bool mmlt_;
   const double area_;
-  PssEvaluator eval_;
-  MmltEvaluator mmltEval_;
+  PerWorker<PssEvaluator> eval_;  // one per worker thread
+  PerWorker<MmltEvaluator> mmltEval_;
   std::vector<std::vector<uint64_t>> poolParts_;  // a resume's chains, every old rank's
   std::vector<double> targets_;
   double bootstrapSum_ = 0.0;
@@ -98,8 +99,8 @@ ChainRender::ChainRender(const Session& session, Renderer& renderer, const Rende
       ps_(pssmltSettings(settings)),
       mmlt_(settings.integrator == Integrator::Mmlt),
       area_(double(settings.width) * settings.height),
-      eval_(renderer.context(), settings.width, settings.height),
-      mmltEval_(renderer.context(), settings.width, settings.height),
+      eval_(mmlt_ ? 0 : settings.threads, renderer.context(), settings.width, settings.height),
+      mmltEval_(mmlt_ ? settings.threads : 0, renderer.context(), settings.width, settings.height),
       targets_(bootstrap(resumed)),
       pool_(mmlt_ ? nullptr : &eval_, mmlt_ ? &mmltEval_ : nullptr, targets_, settings.seed, ps_,
             ownedChains(session, ps_.chains)),
@@ -110,7 +111,8 @@ ChainRender::ChainRender(const Session& session, Renderer& renderer, const Rende
   elapsed_ += allreduceMax(since(start_));
 }
 
-// Sample i on rank i mod P; every rank then holds all targets (same order, same sums).
+// Sample i on rank i mod P (and there on one of its workers); every rank then holds all targets
+// (same order, same sums).
 std::vector<double> ChainRender::bootstrap(const Resumed* resumed) {
   if (resumed) {
     try {
@@ -119,9 +121,11 @@ std::vector<double> ChainRender::bootstrap(const Resumed* resumed) {
       throw InputError(resumed->file, "", e.what());
     }
   }
-  std::vector<double> targets =
-      mmlt_ ? mmltBootstrapTargets(mmltEval_, settings_.seed, ps_.bootstrap, session_.rank(), session_.size())
-            : bootstrapTargets(eval_, settings_.seed, ps_.bootstrap, session_.rank(), session_.size());
+  auto share = [&](int w, int first, int stride) {
+    return mmlt_ ? mmltBootstrapTargets(mmltEval_[w], settings_.seed, ps_.bootstrap, first, stride)
+                 : bootstrapTargets(eval_[w], settings_.seed, ps_.bootstrap, first, stride);
+  };
+  std::vector<double> targets = sumOfWorkerShares(settings_.threads, session_.rank(), session_.size(), share);
   allreduceSum(targets);
   return targets;
 }

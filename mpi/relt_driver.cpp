@@ -12,6 +12,7 @@
 #include "checkpoint/checkpoint.h"
 #include "core/error.h"
 #include "interrupt.h"
+#include "parallel/workers.h"
 #include "mcmc/round_schedule.h"
 #include "request_channel.h"
 #include "replica/round_loop.h"
@@ -176,15 +177,18 @@ ReltOutcome outcomeOf(const Session& session, const ReplicaPool& pool, const Rep
   return out;
 }
 
-// Bootstrap: sample i on rank i mod P; every rank then holds every sample's features. A resumed
-// render takes what it needs of it from the checkpoint instead.
-void bootstrapPool(std::optional<ReplicaPool>& pool, PssEvaluator& eval, const ReplicaSettings& rs, uint64_t seed,
-                   const Session& session, const Resumed* checkpoint) {
+// Bootstrap: sample i on rank i mod P (and there on one of its workers); every rank then holds
+// every sample's features. A resumed render takes what it needs of it from the checkpoint instead.
+void bootstrapPool(std::optional<ReplicaPool>& pool, PerWorker<PssEvaluator>& eval, const ReplicaSettings& rs,
+                   uint64_t seed, const Session& session, const Resumed* checkpoint) {
   if (checkpoint) {
     pool.emplace(eval, rs, seed, checkpointMeanTarget(*checkpoint), session.rank(), session.size());
     return;
   }
-  std::vector<double> features = bootstrapFeatures(eval, rs.family, seed, rs.bootstrap, session.rank(), session.size());
+  std::vector<double> features =
+      sumOfWorkerShares(eval.size(), session.rank(), session.size(), [&](int w, int first, int stride) {
+        return bootstrapFeatures(eval[w], rs.family, seed, rs.bootstrap, first, stride);
+      });
   allreduceSum(features);
   pool.emplace(eval, rs, seed, features, session.rank(), session.size());
 }
@@ -195,7 +199,7 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
                     std::vector<Film>& films, const SnapshotWriter& snapshot, const CheckpointPlan& plan,
                     const Resumed* checkpoint) {
   const ReplicaSettings rs = effectiveReplicaSettings(settings);
-  PssEvaluator eval(renderer.context(), settings.width, settings.height);
+  PerWorker<PssEvaluator> eval(settings.threads, renderer.context(), settings.width, settings.height);
 
   const auto bootstrapStart = Clock::now();
   std::optional<ReplicaPool> pooled;
@@ -224,12 +228,14 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   MpiTransport transport(session.rank(), pool.localDecisions());
   auto writeSnapshot = [&](uint64_t rounds, double elapsed) {
     transport.meet();
+    pool.gatherWorkerFilms(films);
     lastSnapshot = elapsed;
     const std::vector<double> sums = reducedSum(films);
     if (session.isRoot()) snapshot(sums, replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
   };
   auto writeCheckpoint = [&](uint64_t rounds, double elapsed) {
     transport.meet();
+    pool.gatherWorkerFilms(films);
     const nlohmann::json progress = {
         {"rounds", rounds}, {"elapsed", elapsed}, {"steps_per_chain", schedule.stepsAfter(rounds)}};
     saveCheckpoint(plan, "relt", progress, films, pool.checkpointPart());
@@ -259,6 +265,7 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
     if (checkpointNow(plan, elapsed, lastCheckpoint, true, true)) writeCheckpoint(rounds, elapsed);
   };
   const RoundLoopResult loop = runRoundLoop(pool, schedule, transport, films, hooks, resumed);
+  pool.gatherWorkerFilms(films);
   if (loop.stopped) markStopAgreed();
   const double roundCollective = collectiveSeconds() - collectiveBefore;
   // The loop's agreed time is that of the messages read back (normaliser lag): the real end here.

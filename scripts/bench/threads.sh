@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Ranks against threads on this machine's cores (docs/BENCHMARKS.md, "Threads inside a rank"):
-#   speed:  pt, bdpt (samples/s) and erpt (mutations/s) on cornell-box 256x256, max depth 8, with
+#   speed:  pt, bdpt (samples/s), erpt, pssmlt, mmlt and relt (mutations/s) on cornell-box 256x256,
+#           max depth 8, with
 #           2 ranks x 1 thread and 1 rank x 2 threads (unbound), in pairs; prints each pair's ratio
 #           threads/ranks and the median.
 #   memory: ring and water-box at 1024x1024, 1 spp of bdpt, both set-ups: the node's resident
@@ -31,11 +32,12 @@ field() { /usr/bin/python3 -c "import json,sys; j=json.load(open('$TMP/stats.jso
 
 {
   echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores; $(date -u +%Y-%m-%d); commit $(git -C "$ROOT" rev-parse --short HEAD)"
-  for integ in pt bdpt erpt; do
+  for integ in pt bdpt erpt pssmlt mmlt relt; do
     case "$integ" in
       pt) amount=(--spp 256); key=samples_per_second ;;
       bdpt) amount=(--spp 64); key=samples_per_second ;;
       erpt) amount=(--spp 2); key=mutations_per_second ;;
+      *) amount=(--mutations-per-pixel 32); key=mutations_per_second ;;
     esac
     for _ in $(seq "$PAIRS"); do
       run ranks "$ROOT/scenes/cornell-box.gltf" --integrator "$integ" "${amount[@]}" --width 256 --height 256 --max-depth 8

@@ -1,23 +1,25 @@
 #include "mcmc/chain_pool.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "core/words.h"
+#include "parallel/workers.h"
 
 namespace relt {
 namespace {
 constexpr uint64_t kPartVersion = 1;
 }  // namespace
 
-ChainPool::ChainPool(PssEvaluator* pss, MmltEvaluator* mmlt, const std::vector<double>& bootstrapTargets,
+ChainPool::ChainPool(PerWorker<PssEvaluator>* pss, PerWorker<MmltEvaluator>* mmlt, const std::vector<double>& bootstrapTargets,
                      uint64_t seed, const PssmltSettings& settings, const std::vector<int>& chains)
     : pss_(pss), mmlt_(mmlt), ids_(chains) {
   const Distribution1D bootstrap(bootstrapTargets);
   if (bootstrap.total() <= 0.0) return;  // nothing visible: no chains, the image stays black
   const MmltChainPlan plan =
-      mmlt_ ? planMmltChains(bootstrapTargets, mmlt_->maxDepth(), settings.chains) : MmltChainPlan{};
+      mmlt_ ? planMmltChains(bootstrapTargets, maxDepth(), settings.chains) : MmltChainPlan{};
   depthFilms_ = plan.stratified;
-  const size_t depths = mmlt_ ? static_cast<size_t>(mmlt_->maxDepth()) : 0;
+  const size_t depths = mmlt_ ? static_cast<size_t>(maxDepth()) : 0;
   // mmlt with a plan: a chain starts at one of its depth's bootstrap samples, in proportion to target.
   std::vector<Distribution1D> atDepth(depths);
   auto startsAtDepth = [&](int depth) -> const Distribution1D& {
@@ -34,7 +36,7 @@ ChainPool::ChainPool(PssEvaluator* pss, MmltEvaluator* mmlt, const std::vector<d
     McmcChain& chain = chains_.emplace_back(seed, c, settings);
     if (!mmlt_) {
       depth_.push_back(0);
-      chain.start(*pss_, bootstrapKey(seed, chain.pickBootstrap(bootstrap)));
+      chain.start((*pss_)[0], bootstrapKey(seed, chain.pickBootstrap(bootstrap)));
       continue;
     }
     int depth;
@@ -44,33 +46,56 @@ ChainPool::ChainPool(PssEvaluator* pss, MmltEvaluator* mmlt, const std::vector<d
       index = chain.pickBootstrap(startsAtDepth(depth));
     } else {
       index = chain.pickBootstrap(bootstrap);
-      depth = mmltDepthOfBootstrap(index, mmlt_->maxDepth());
+      depth = mmltDepthOfBootstrap(index, maxDepth());
     }
     depth_.push_back(depth);
-    chain.start([&](SampleSource& u, PathSample& out) { return (*mmlt_)(depth, u, out); }, bootstrapKey(seed, index));
+    chain.start([&](SampleSource& u, PathSample& out) { return (*mmlt_)[0](depth, u, out); }, bootstrapKey(seed, index));
   }
 }
 
 template <class F>
-void ChainPool::withEvaluator(size_t i, F&& f) {
-  if (!mmlt_) return f(*pss_);
+void ChainPool::withEvaluator(size_t i, int worker, F&& f) {
+  if (!mmlt_) return f((*pss_)[worker]);
+  MmltEvaluator& eval = (*mmlt_)[worker];
   const int depth = depth_[i];
-  f([this, depth](SampleSource& u, PathSample& out) { return (*mmlt_)(depth, u, out); });
+  f([&eval, depth](SampleSource& u, PathSample& out) { return eval(depth, u, out); });
 }
 
 std::vector<Film>& ChainPool::depthFilms(int width, int height) {
-  if (depthFilms_ && films_.empty()) films_.assign(static_cast<size_t>(mmlt_->maxDepth()), Film(width, height));
+  if (depthFilms_ && films_.empty()) films_.assign(static_cast<size_t>(maxDepth()), Film(width, height));
   return films_;
+}
+
+Film& ChainPool::filmOf(int worker, size_t i, Film& film) {
+  const size_t d = depthFilms_ ? static_cast<size_t>(depth_[i] - 1) : 0;
+  if (worker == 0) return depthFilms_ ? films_[d] : film;
+  return workerFilms_[size_t(worker - 1)][d];
+}
+
+void ChainPool::gatherWorkers(Film& film) {
+  for (std::vector<Film>& own : workerFilms_)
+    for (size_t d = 0; d < own.size(); ++d) {
+      (depthFilms_ ? films_[d] : film).addWeighted(own[d], 1.0);
+      own[d].clear();
+    }
 }
 
 void ChainPool::run(const std::vector<uint64_t>& steps, Film& film) {
   depthFilms(film.width(), film.height());
-  for (size_t i = 0; i < chains_.size(); ++i) {
-    Film& target = depthFilms_ ? films_[static_cast<size_t>(depth_[i] - 1)] : film;
-    withEvaluator(i, [&](auto&& eval) {
-      for (uint64_t k = 0; k < steps[i]; ++k) chains_[i].step(eval, target);
-    });
+  const int workers = std::min(this->workers(), std::max(int(chains_.size()), 1));
+  if (workerFilms_.empty() && workers > 1) {
+    const std::vector<Film> own(depthFilms_ ? films_.size() : 1, Film(film.width(), film.height()));
+    workerFilms_.assign(size_t(workers - 1), own);
   }
+  runOnWorkers(workers, [&](int w) {
+    for (size_t i = size_t(w); i < chains_.size(); i += size_t(workers)) {
+      Film& target = filmOf(w, i, film);
+      withEvaluator(i, w, [&](auto&& eval) {
+        for (uint64_t k = 0; k < steps[i]; ++k) chains_[i].step(eval, target);
+      });
+    }
+  });
+  gatherWorkers(film);
 }
 
 std::vector<uint64_t> ChainPool::checkpointPart() const {
@@ -105,7 +130,7 @@ void ChainPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
       if (found[i] || (mmlt_ && depth != static_cast<uint64_t>(depth_[i])))
         throw std::runtime_error("the checkpoint's chains are not this render's");
       found[i] = 1;
-      withEvaluator(i, [&](auto&& eval) { chains_[i].restore(eval, state); });
+      withEvaluator(i, 0, [&](auto&& eval) { chains_[i].restore(eval, state); });
     }
     if (!in.done()) throw std::runtime_error("the checkpoint's chain state has trailing data");
   }
@@ -125,7 +150,7 @@ ChainCounters ChainPool::counters() const {
 
 std::vector<ChainCounters> ChainPool::perDepth() const {
   if (!mmlt_) return {};
-  std::vector<ChainCounters> d(static_cast<size_t>(mmlt_->maxDepth()));
+  std::vector<ChainCounters> d(static_cast<size_t>(maxDepth()));
   for (size_t i = 0; i < chains_.size(); ++i) d[static_cast<size_t>(depth_[i] - 1)].add(chains_[i].counters());
   return d;
 }

@@ -1,23 +1,26 @@
 #pragma once
 // The Markov chains one rank owns (pssmlt or mmlt), kept alive between rounds so that a render can
 // stop on a time budget or write snapshots at round boundaries. A chain's trajectory does not
-// depend on how its steps are split into rounds.
+// depend on how its steps are split into rounds, nor on the worker thread that steps it.
 #include <vector>
 
 #include "mcmc/mmlt.h"
 #include "mcmc/pssmlt.h"
+#include "parallel/per_worker.h"
 
 namespace relt {
 
 class ChainPool {
  public:
-  // Exactly one evaluator: pssmlt chains (pss) or mmlt chains (mmlt; each at the depth of its
-  // starting bootstrap sample).
-  ChainPool(PssEvaluator* pss, MmltEvaluator* mmlt, const std::vector<double>& bootstrapTargets, uint64_t seed,
+  // Exactly one kind of evaluator: pssmlt chains (pss) or mmlt chains (mmlt; each at the depth of
+  // its starting bootstrap sample). One evaluator per worker thread: run() steps chain i on
+  // worker i mod workers.
+  ChainPool(PerWorker<PssEvaluator>* pss, PerWorker<MmltEvaluator>* mmlt, const std::vector<double>& bootstrapTargets, uint64_t seed,
             const PssmltSettings& settings, const std::vector<int>& chains);
 
   // Advances chain i by steps[i] mutations (indices as in the `chains` given to the constructor).
-  // Splats go to `film`, except for mmlt with a stratified plan: to one film per depth.
+  // Splats go to `film`, except for mmlt with a stratified plan: to one film per depth. Workers
+  // other than the first splat into films of their own, added in worker order when the round ends.
   void run(const std::vector<uint64_t>& steps, Film& film);
   // mmlt, stratified: adds weight[d] x depth d's film to `into` (see mmltDepthWeights); else nothing.
   void mergeDepthFilms(const std::vector<double>& weight, Film& into) const;
@@ -40,17 +43,23 @@ class ChainPool {
   std::vector<ChainCounters> perDepth() const;
 
  private:
-  PssEvaluator* pss_;
-  MmltEvaluator* mmlt_;
-  // f(evaluator of chain i): pssmlt's, or mmlt's at the chain's depth.
+  PerWorker<PssEvaluator>* pss_;
+  PerWorker<MmltEvaluator>* mmlt_;
+  int workers() const { return mmlt_ ? mmlt_->size() : pss_->size(); }
+  int maxDepth() const { return (*mmlt_)[0].maxDepth(); }
+  // f(worker's evaluator of chain i): pssmlt's, or mmlt's at the chain's depth.
   template <class F>
-  void withEvaluator(size_t i, F&& f);
+  void withEvaluator(size_t i, int worker, F&& f);
+  // The film worker w splats chain i into.
+  Film& filmOf(int worker, size_t i, Film& film);
+  void gatherWorkers(Film& film);
 
   std::vector<int> ids_;  // global chain ids, as given to the constructor
   std::vector<McmcChain> chains_;
   std::vector<int> depth_;
   bool depthFilms_ = false;  // mmlt with a stratified plan
   std::vector<Film> films_;  // per depth - 1, sized on first use
+  std::vector<std::vector<Film>> workerFilms_;  // workers 1 ..: film or films per depth, as above
 };
 
 }  // namespace relt

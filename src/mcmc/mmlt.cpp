@@ -100,10 +100,11 @@ MmltChainPlan planMmltChains(const std::vector<double>& targets, int maxDepth, i
   return plan;
 }
 
-ChainCounters runMmltChains(MmltEvaluator& eval, const std::vector<double>& bootstrapTargets, uint64_t seed,
+ChainCounters runMmltChains(PerWorker<MmltEvaluator>& evals, const std::vector<double>& bootstrapTargets, uint64_t seed,
                             const PssmltSettings& settings, const std::vector<int>& chains, uint64_t totalMutations,
                             Film& film, std::vector<ChainCounters>* perDepth) {
-  ChainPool pool(nullptr, &eval, bootstrapTargets, seed, settings, chains);
+  const MmltEvaluator& eval = evals[0];
+  ChainPool pool(nullptr, &evals, bootstrapTargets, seed, settings, chains);
   pool.run(chainSteps(chains, totalMutations, settings.chains, pool.size()), film);
   std::vector<ChainCounters> depths = pool.perDepth();
   if (depths.empty()) depths.assign(static_cast<size_t>(eval.maxDepth()), ChainCounters{});

@@ -87,10 +87,10 @@ StreamValues McmcChain::restoreState(const std::vector<uint64_t>& words) {
   return values;
 }
 
-ChainCounters runChains(PssEvaluator& eval, const std::vector<double>& bootstrapTargets, uint64_t seed,
+ChainCounters runChains(PerWorker<PssEvaluator>& evals, const std::vector<double>& bootstrapTargets, uint64_t seed,
                         const PssmltSettings& settings, const std::vector<int>& chains, uint64_t totalMutations,
                         Film& film) {
-  ChainPool pool(&eval, nullptr, bootstrapTargets, seed, settings, chains);
+  ChainPool pool(&evals, nullptr, bootstrapTargets, seed, settings, chains);
   pool.run(chainSteps(chains, totalMutations, settings.chains, pool.size()), film);
   return pool.counters();
 }

@@ -12,6 +12,7 @@
 #include "core/sampling.h"
 #include "film/film.h"
 #include "mcmc/pss_evaluator.h"
+#include "parallel/per_worker.h"
 #include "pss/chain_defaults.h"
 #include "pss/primary_sample_vector.h"
 
@@ -139,7 +140,7 @@ std::vector<uint64_t> chainSteps(const std::vector<int>& chains, uint64_t totalM
                                  size_t poolSize);
 
 // Runs `mutations` steps of every chain in `chains` on one film (what one rank does).
-ChainCounters runChains(PssEvaluator& eval, const std::vector<double>& bootstrapTargets, uint64_t seed,
+ChainCounters runChains(PerWorker<PssEvaluator>& evals, const std::vector<double>& bootstrapTargets, uint64_t seed,
                         const PssmltSettings& settings, const std::vector<int>& chains, uint64_t totalMutations,
                         Film& film);
 

@@ -56,4 +56,15 @@ void runOnWorkers(int workers, const std::function<void(int worker)>& work) {
     if (e) std::rethrow_exception(e);
 }
 
+std::vector<double> sumOfWorkerShares(int workers, int first, int stride,
+                                      const std::function<std::vector<double>(int worker, int first, int stride)>& part) {
+  workers = std::max(workers, 1);
+  std::vector<std::vector<double>> parts(static_cast<size_t>(workers));
+  runOnWorkers(workers, [&](int w) { parts[size_t(w)] = part(w, first + w * stride, workers * stride); });
+  std::vector<double> sum = std::move(parts[0]);
+  for (size_t w = 1; w < parts.size(); ++w)
+    for (size_t i = 0; i < sum.size(); ++i) sum[i] += parts[w][i];
+  return sum;
+}
+
 }  // namespace relt

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace relt {
 
@@ -28,6 +29,13 @@ int currentWorker();
 // Runs work(w) for w = 0 .. workers - 1 at once (w = 0 on the calling thread) and returns when all
 // have ended; an exception thrown by a worker is rethrown then (the lowest worker's if several).
 void runOnWorkers(int workers, const std::function<void(int worker)>& work);
+
+// A rank's share of a sequence of samples (first, first + stride, ...) split over its workers:
+// worker w computes part(w, first + w * stride, workers * stride), a vector with its samples'
+// entries and zeros elsewhere; the parts are summed. Every entry comes from one worker, so the sum
+// is exact: the result does not depend on the number of workers (bootstraps).
+std::vector<double> sumOfWorkerShares(int workers, int first, int stride,
+                                      const std::function<std::vector<double>(int worker, int first, int stride)>& part);
 
 // A count every worker adds to at full speed (a slot per worker), read as the total.
 class PerWorkerCount {

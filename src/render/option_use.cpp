@@ -29,7 +29,6 @@ const std::vector<OptionUse>& optionUses() {
         {"--chain-length", {I::Erpt}, nullptr},
         {"--erpt-max-consecutive", {I::Erpt}, nullptr},
         {"--erpt-proposal-filter", {I::Erpt}, nullptr},
-        {"--threads", passes, "the chain integrators run one thread per rank"},
     };
     for (const char* relt : {"--family", "--levels", "--ladders", "--exchange", "--exchange-interval",
                              "--normaliser-lag", "--normaliser-lag-growth", "--placement", "--balance-window",

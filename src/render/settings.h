@@ -39,8 +39,7 @@ struct RenderSettings {
   std::string camera;             // empty: first camera
   float exposure = 0.0f;
   MisHeuristic heuristic = MisHeuristic::Power;
-  // Worker threads of a rank (pt, bdpt, erpt; the chain integrators run one): the image does not
-  // depend on them.
+  // Worker threads of a rank: the image does not depend on them (to rounding).
   int threads = 1;
   // Markov-chain integrators.
   std::optional<double> mutationsPerPixel;  // default kDefaultMutationsPerPixel

@@ -167,7 +167,7 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
   // are traced again.
   for (int c = 0; c < chainCount(); ++c) records[size_t(c)] = noteArrival(c, records[size_t(c)]);
   chains_.clear();
-  for (int c : hosted()) chains_.emplace_back(records[size_t(c)], family_, evaluator_);
+  for (int c : hosted()) chains_.emplace_back(records[size_t(c)], family_, evaluator());
   reindex();
   if (!localDecisions() || rank_ == 0) {
     tally_ = tally;

@@ -27,6 +27,10 @@ struct LevelCounters : ChainCounters {
 // Large steps are uniform samples of primary sample space: they refine every level's b.
 struct LargeStepSums {
   explicit LargeStepSums(int levels = 0) : sum(size_t(levels), 0.0) {}
+  void add(const LargeStepSums& other) {
+    for (size_t k = 0; k < sum.size(); ++k) sum[k] += other.sum[k];
+    count += other.count;
+  }
   std::vector<double> sum;
   uint64_t count = 0;
 };

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "mcmc/pssmlt.h"
+#include "parallel/workers.h"
 #include "replica/annealing.h"
 
 namespace relt {
@@ -27,26 +28,26 @@ std::vector<double> bootstrapFeatures(PssEvaluator& eval, const FamilySettings& 
   return out;
 }
 
-ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, uint64_t seed,
+ReplicaPool::ReplicaPool(PerWorker<PssEvaluator>& evals, const ReplicaSettings& settings, uint64_t seed,
                          const std::vector<double>& bootstrap, int rank, int ranks)
-    : ReplicaPool(eval, settings, seed, LevelFamily::meanTarget(settings.family, bootstrap), rank, ranks) {
+    : ReplicaPool(evals, settings, seed, LevelFamily::meanTarget(settings.family, bootstrap), rank, ranks) {
   startFromBootstrap(bootstrap);
 }
 
-ReplicaPool::ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, uint64_t seed, double meanTarget,
-                         int rank, int ranks)
+ReplicaPool::ReplicaPool(PerWorker<PssEvaluator>& evals, const ReplicaSettings& settings, uint64_t seed,
+                         double meanTarget, int rank, int ranks)
     : settings_(settings),
       seed_(seed),
       rank_(rank),
       ranks_(ranks),
       family_(settings.family, meanTarget),
       estimator_(family_, settings.beta),
-      evaluator_(eval, family_),
       placement_(resolvePlacement(settings.placement, settings.ladders, ranks)),
       departed_(size_t(family_.levels())),
       tally_(family_.levels()),
       trips_(settings.ladders * family_.levels(), family_.levels()) {
   const int m = levels();
+  for (int w = 0; w < evals.size(); ++w) evaluators_.emplace_back(evals[w], family_);
   meanTarget_ = meanTarget;
   bootstrapSum_.assign(size_t(m), 0.0);
   largeSum_.assign(size_t(m), 0.0);
@@ -102,16 +103,17 @@ void ReplicaPool::startFromBootstrap(const std::vector<double>& bootstrap) {
     start.emplace_back(bootstrapSum_[size_t(k)] > 0.0 ? q[size_t(k)] : std::vector<double>(samples, 1.0));
   }
   std::vector<std::vector<StreamValues>> annealed;
-  if (settings_.init == InitKind::Annealing) annealed = annealedStarts(evaluator_, family_, q, seed_, settings_.annealing);
+  if (settings_.init == InitKind::Annealing)
+    annealed = annealedStarts(evaluator(), family_, q, seed_, settings_.annealing);
   chains_.reserve(hosted().size());
   for (int c : hosted()) {
     const int level = c % m;
     ReplicaChain& chain = chains_.emplace_back(replicaChainKey(seed_, c), level, family_);
     if (!annealed.empty()) {
       const std::vector<StreamValues>& particles = annealed[size_t(level)];
-      chain.start(evaluator_, replicaChainKey(seed_, c), particles[chain.pickUniform(particles.size())]);
+      chain.start(evaluator(), replicaChainKey(seed_, c), particles[chain.pickUniform(particles.size())]);
     } else {
-      chain.start(evaluator_, bootstrapKey(seed_, chain.pickBootstrap(start[size_t(level)])));
+      chain.start(evaluator(), bootstrapKey(seed_, chain.pickBootstrap(start[size_t(level)])));
     }
   }
   reindex();
@@ -139,18 +141,46 @@ void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films, 
     }
     stepsPerChain_ += steps;
   }
-  for (size_t i = 0; i < chains_.size(); ++i) {
-    const int c = hosted()[i];
-    if (groupOf(c) != group) continue;
-    ReplicaChain& chain = chains_[i];
-    if (epochOf_[size_t(c)] != epoch_) {
-      chain.refresh(evaluator_);
-      epochOf_[size_t(c)] = epoch_;
-    }
-    Film& film = films.size() > 1 ? films[size_t(chain.level())] : films[0];
-    chain.run(steps, evaluator_, estimator_, film, pendingLarge_[size_t(group)]);
-    if (progress) progress();
+  // The group's hosted chains, dealt to the workers in turn: chain k of them to worker k mod T.
+  // Worker 0 adds to the live films and sums, the others to their own (sums added in worker order).
+  std::vector<size_t> mine;
+  for (size_t i = 0; i < chains_.size(); ++i)
+    if (groupOf(hosted()[i]) == group) mine.push_back(i);
+  const int workers = std::min(int(evaluators_.size()), std::max(int(mine.size()), 1));
+  if (workers > 1 && workerFilms_.empty()) {
+    const std::vector<Film> empty(films.size(), Film(films[0].width(), films[0].height()));
+    workerFilms_.assign(evaluators_.size() - 1, empty);
   }
+  std::vector<LargeStepSums> large(size_t(workers - 1), LargeStepSums(levels()));
+  runOnWorkers(workers, [&](int w) {
+    LargeStepSums& sums = w == 0 ? pendingLarge_[size_t(group)] : large[size_t(w - 1)];
+    std::vector<Film>& own = w == 0 ? films : workerFilms_[size_t(w - 1)];
+    for (size_t k = size_t(w); k < mine.size(); k += size_t(workers)) {
+      stepChain(mine[k], steps, w, own, sums);
+      if (w == 0 && progress) progress();  // MPI calls stay on the main thread
+    }
+  });
+  for (const LargeStepSums& l : large) pendingLarge_[size_t(group)].add(l);
+}
+
+void ReplicaPool::stepChain(size_t i, uint64_t steps, int worker, std::vector<Film>& films, LargeStepSums& large) {
+  const int c = hosted()[i];
+  ReplicaChain& chain = chains_[i];
+  const LevelEvaluator& eval = evaluators_[size_t(worker)];
+  if (epochOf_[size_t(c)] != epoch_) {
+    chain.refresh(eval);
+    epochOf_[size_t(c)] = epoch_;
+  }
+  Film& film = films.size() > 1 ? films[size_t(chain.level())] : films[0];
+  chain.run(steps, eval, estimator_, film, large);
+}
+
+void ReplicaPool::gatherWorkerFilms(std::vector<Film>& films) {
+  for (std::vector<Film>& own : workerFilms_)
+    for (size_t k = 0; k < own.size(); ++k) {
+      films[k].addWeighted(own[k], 1.0);
+      own[k].clear();
+    }
 }
 
 size_t ReplicaPool::messageLength(int group, int rank) const {
@@ -406,7 +436,7 @@ std::vector<uint64_t> ReplicaPool::exportChain(int chain) {
 }
 
 void ReplicaPool::importChain(int chain, const std::vector<uint64_t>& state) {
-  imported_.emplace_back(chain, ReplicaChain(noteArrival(chain, state), family_, evaluator_));
+  imported_.emplace_back(chain, ReplicaChain(noteArrival(chain, state), family_, evaluator()));
 }
 
 void ReplicaPool::commitMoves() {

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "film/film.h"
+#include "parallel/per_worker.h"
 #include "replica/exchange.h"
 #include "replica/family.h"
 #include "replica/level_estimator.h"
@@ -46,12 +47,13 @@ struct RoundAgreement {
 class ReplicaPool {
  public:
   // `bootstrap` holds every bootstrap sample's features (bootstrapFeatures, summed over ranks).
-  ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, uint64_t seed, const std::vector<double>& bootstrap,
-              int rank, int ranks);
+  // One evaluator per worker thread of the rank (runRound deals the chains to them).
+  ReplicaPool(PerWorker<PssEvaluator>& evals, const ReplicaSettings& settings, uint64_t seed,
+              const std::vector<double>& bootstrap, int rank, int ranks);
   // A pool to restore() a checkpoint into: no bootstrap is taken again, the family's scale (the
   // bootstrap's mean target) comes from the checkpoint (checkpointMeanTarget).
-  ReplicaPool(PssEvaluator& eval, const ReplicaSettings& settings, uint64_t seed, double meanTarget, int rank,
-              int ranks);
+  ReplicaPool(PerWorker<PssEvaluator>& evals, const ReplicaSettings& settings, uint64_t seed, double meanTarget,
+              int rank, int ranks);
   static double checkpointMeanTarget(const std::vector<std::vector<uint64_t>>& parts);
   ReplicaPool(const ReplicaPool&) = delete;  // chains refer to family_
   ReplicaPool& operator=(const ReplicaPool&) = delete;
@@ -71,9 +73,13 @@ class ReplicaPool {
   // False when no bootstrap sample saw light: the image is black and no chain runs.
   bool active() const { return active_; }
 
-  // Steps every hosted chain of `group` `steps` times. films: one, or one per level (per-level
-  // layers). `progress`, if given, runs after each chain (the MPI layer moves pending messages).
+  // Steps every hosted chain of `group` `steps` times, on the rank's worker threads. films: one,
+  // or one per level (per-level layers). `progress`, if given, runs on the calling thread after
+  // each chain it stepped (the MPI layer moves pending messages). With several workers, those
+  // other than the first splat into films of their own: gatherWorkerFilms() adds them to `films`
+  // (before they are read: snapshots, checkpoints, the end).
   void runRound(int group, uint64_t steps, std::vector<Film>& films, const std::function<void()>& progress = {});
+  void gatherWorkerFilms(std::vector<Film>& films);
   // This rank's message for the group's collective (`roundSeconds`: time this rank spent in
   // runRound), and the length rank `rank`'s message has (it changes when chains move).
   // `stop`: this rank was asked to stop (a signal); every rank then ends after this round.
@@ -141,6 +147,8 @@ class ReplicaPool {
  private:
   // The bootstrap's normalisers and every hosted chain's first state (resampled or annealed).
   void startFromBootstrap(const std::vector<double>& bootstrap);
+  const LevelEvaluator& evaluator() const { return evaluators_[0]; }  // the calling thread's
+  void stepChain(size_t i, uint64_t steps, int worker, std::vector<Film>& films, LargeStepSums& large);
   const std::vector<int>& hosted() const { return hostedByRank_[size_t(rank_)]; }
   void reindex();  // localIndex_ from hosted()
   std::vector<ChainMove> balanceMoves(int group, const std::vector<double>& seconds, const std::vector<double>& squares,
@@ -166,7 +174,8 @@ class ReplicaPool {
   int rank_, ranks_;
   LevelFamily family_;
   LevelEstimator estimator_;
-  LevelEvaluator evaluator_;
+  std::vector<LevelEvaluator> evaluators_;  // per worker thread
+  std::vector<std::vector<Film>> workerFilms_;  // workers 1 ..: their splats since the last gather
   bool active_ = false;
   Placement placement_;
   std::vector<std::vector<int>> hostedByRank_;  // global chain ids each rank hosts (placement)

@@ -172,14 +172,18 @@ TEST(DirectEmission, FurnaceMatchesTheAnalyticValueWithinOnePercent) {
   }
 }
 
-// Nor on the worker threads of a rank: -np 1 --threads 2 (and 3, which deals rows unevenly) and
-// -np 2 --threads 1 give the image of -np 1 --threads 1 for every integrator that takes threads;
-// the stats say how many ran.
-TEST(ThreadIndependence, PtBdptAndErptImagesAreTheSameOnAnySplitOfRanksAndThreads) {
+// Nor on the worker threads of a rank: -np 1 --threads 2 (and 3, which deals rows and chains
+// unevenly) and -np 2 --threads 1 give the image of -np 1 --threads 1 for every integrator; the
+// stats say how many ran.
+TEST(ThreadIndependence, EveryIntegratorsImageIsTheSameOnAnySplitOfRanksAndThreads) {
   struct Case {
     std::string integrator, amount;
   };
-  for (const Case& c : {Case{"pt", "--spp 3"}, Case{"bdpt", "--spp 3"}, Case{"erpt", "--spp 1 --chain-length 10"}}) {
+  const std::string relt =
+      "--mutations-per-pixel 4 --ladders 3 --family relaxed --levels 5 --exchange permutation --exchange-interval 4";
+  for (const Case& c : {Case{"pt", "--spp 3"}, Case{"bdpt", "--spp 3"}, Case{"erpt", "--spp 1 --chain-length 10"},
+                        Case{"pssmlt", "--mutations-per-pixel 4 --chains 7"},
+                        Case{"mmlt", "--mutations-per-pixel 8 --chains 9"}, Case{"relt", relt}}) {
     SCOPED_TRACE(c.integrator);
     const std::string dir = makeTempDir("threads-" + c.integrator);
     const Image one = renderWithRanks(1, c.integrator, dir, c.amount + " --threads 1");
@@ -193,29 +197,28 @@ TEST(ThreadIndependence, PtBdptAndErptImagesAreTheSameOnAnySplitOfRanksAndThread
   }
 }
 
-// A checkpoint of a render on two threads holds every worker's sums: resumed for more passes, it
-// gives the image of the render that never stopped.
+// A checkpoint of a render on two threads holds every worker's sums: resumed for more work, it
+// gives the image of the render that never stopped (bdpt: passes; mmlt: per-depth films; relt:
+// chains whose splats were in the second worker's films at the checkpoint).
 TEST(ThreadIndependence, ACheckpointOfTwoThreadsResumesToTheUninterruptedImage) {
-  const std::string dir = makeTempDir("threads-checkpoint");
-  const std::string scene = sourcePath("scenes/cornell-box.gltf"), common = " --integrator bdpt --width 40 --height 30 "
-                                                                            "--seed 5 --threads 2 ";
-  auto render = [&](const std::string& args) {
-    const CommandResult r = runCommand(mpirun(1) + reltBinary() + " render " + scene + common + args);
-    EXPECT_EQ(r.exitCode, 0) << r.output;
+  struct Case {
+    std::string integrator, whole, half;
   };
-  render("-o " + dir + "/whole.exr --spp 4");
-  render("-o " + dir + "/half.exr --spp 2 --checkpoint " + dir + "/ck");
-  render("-o " + dir + "/resumed.exr --spp 4 --resume " + dir + "/ck");
-  expectSameImage(readExr(dir + "/whole.exr"), readExr(dir + "/resumed.exr"));
-}
-
-TEST(ThreadIndependence, TheChainIntegratorsRefuseThreads) {
-  const std::string dir = makeTempDir("threads-chains");
-  for (const char* integrator : {"pssmlt", "mmlt", "relt"}) {
-    const CommandResult r = runCommand(reltBinary() + " render " + sourcePath("scenes/cornell-box.gltf") + " -o " + dir +
-                                       "/x.exr --integrator " + integrator + " --threads 2");
-    EXPECT_EQ(r.exitCode, 2) << r.output;
-    EXPECT_NE(r.output.find("--threads"), std::string::npos) << r.output;
-    EXPECT_FALSE(fileExists(dir + "/x.exr"));
+  const std::string relt = " --ladders 3 --family relaxed --levels 5 --exchange-interval 4 ";
+  for (const Case& c : {Case{"bdpt", "--spp 4", "--spp 2"},
+                        Case{"mmlt", "--chains 48 --mutations-per-pixel 8", "--chains 48 --mutations-per-pixel 4"},
+                        Case{"relt", relt + "--mutations-per-pixel 8", relt + "--mutations-per-pixel 4"}}) {
+    SCOPED_TRACE(c.integrator);
+    const std::string dir = makeTempDir("threads-checkpoint-" + c.integrator);
+    const std::string scene = sourcePath("scenes/cornell-box.gltf"),
+                      common = " --integrator " + c.integrator + " --width 40 --height 30 --seed 5 --threads 2 ";
+    auto render = [&](const std::string& args) {
+      const CommandResult r = runCommand(mpirun(1) + reltBinary() + " render " + scene + common + args);
+      EXPECT_EQ(r.exitCode, 0) << r.output;
+    };
+    render("-o " + dir + "/whole.exr " + c.whole);
+    render("-o " + dir + "/half.exr " + c.half + " --checkpoint " + dir + "/ck");
+    render("-o " + dir + "/resumed.exr " + c.whole + " --resume " + dir + "/ck");
+    expectSameImage(readExr(dir + "/whole.exr"), readExr(dir + "/resumed.exr"));
   }
 }

@@ -59,9 +59,9 @@ Image renderChainsOrSamples(Renderer& renderer) {
   Film film(s.width, s.height);
   if (s.integrator == Integrator::Relt) {
     // One process hosts every chain and runs the round loop of mpi/relt_driver with a local transport.
-    PssEvaluator eval(renderer.context(), s.width, s.height);
+    PerWorker<PssEvaluator> eval(s.threads, renderer.context(), s.width, s.height);
     const ReplicaSettings rs = effectiveReplicaSettings(s);
-    ReplicaPool pool(eval, rs, s.seed, bootstrapFeatures(eval, rs.family, s.seed, rs.bootstrap, 0, 1), 0, 1);
+    ReplicaPool pool(eval, rs, s.seed, bootstrapFeatures(eval[0], rs.family, s.seed, rs.bootstrap, 0, 1), 0, 1);
     std::vector<Film> films(1, film);
     const double area = double(s.width) * s.height;
     const ReplicaSchedule schedule(area, pool.chainCount(), rs.exchangeInterval, std::nullopt,
@@ -70,6 +70,7 @@ Image renderChainsOrSamples(Renderer& renderer) {
     RoundLoopHooks hooks;
     hooks.elapsed = [] { return 0.0; };  // no timings: the placement of one rank never changes anyway
     const uint64_t rounds = runRoundLoop(pool, schedule, transport, films, hooks).rounds;
+    pool.gatherWorkerFilms(films);
     return Renderer::resolve(films[0], films[0].data(), replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
   }
   if (isMarkovChain(s.integrator)) {
@@ -80,15 +81,15 @@ Image renderChainsOrSamples(Renderer& renderer) {
     std::vector<int> chains(static_cast<size_t>(ps.chains));
     for (int c = 0; c < ps.chains; ++c) chains[static_cast<size_t>(c)] = c;
     if (s.integrator == Integrator::Mmlt) {
-      MmltEvaluator mmlt(renderer.context(), s.width, s.height);
-      const std::vector<double> mt = mmltBootstrapTargets(mmlt, s.seed, ps.bootstrap, 0, 1);
+      PerWorker<MmltEvaluator> mmlt(s.threads, renderer.context(), s.width, s.height);
+      const std::vector<double> mt = mmltBootstrapTargets(mmlt[0], s.seed, ps.bootstrap, 0, 1);
       std::vector<ChainCounters> perDepth;
       runMmltChains(mmlt, mt, s.seed, ps, chains, total, film, &perDepth);
       const double b = mmltNormaliser(mt, s.maxDepth, perDepth);
       return Renderer::resolve(film, film.data(), pssmltResolveDivisor(total, b, area));
     }
-    PssEvaluator eval(renderer.context(), s.width, s.height);
-    const std::vector<double> targets = bootstrapTargets(eval, s.seed, ps.bootstrap, 0, 1);
+    PerWorker<PssEvaluator> eval(s.threads, renderer.context(), s.width, s.height);
+    const std::vector<double> targets = bootstrapTargets(eval[0], s.seed, ps.bootstrap, 0, 1);
     double sum = 0.0;
     for (double t : targets) sum += t;
     const ChainCounters counters = runChains(eval, targets, s.seed, ps, chains, total, film);

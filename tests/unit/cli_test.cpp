@@ -69,7 +69,6 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"SmallStepWithPt", "render " + kScene + " -o OUT --integrator pt --small-step-min 0.01", "--small-step-min: only for"},
                       BadInvocation{"LargeStepWithErpt", "render " + kScene + " -o OUT --integrator erpt --large-step-probability 0.5", "--large-step-probability: only for"},
                       BadInvocation{"DirectEmissionOffWithBdpt", "render " + kScene + " -o OUT --direct-emission-spp 0", "--direct-emission-spp: only for"},
-                      BadInvocation{"ThreadsWithRelt", "render " + kScene + " -o OUT --integrator relt --threads 2", "--threads: only for --integrator pt, bdpt and erpt"},
                       BadInvocation{"TraceWithPssmlt", "render " + kScene + " -o OUT --integrator pssmlt --trace OUT.json", "--trace: only for --integrator relt"},
                       BadInvocation{"NegativeSeed", "render " + kScene + " -o OUT --seed -1", "--seed: must be an integer"},
                       BadInvocation{"SeedBeyond64Bits", "render " + kScene + " -o OUT --seed 18446744073709551616", "--seed: must be an integer"},

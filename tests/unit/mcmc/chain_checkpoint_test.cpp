@@ -66,10 +66,10 @@ TEST(ChainCheckpoint, ARestoredChainContinuesBitForBit) {
 TEST(ChainCheckpoint, ChainPoolPartsRestoreIntoAnyOwnership) {
   const RenderSettings s = small(Integrator::Mmlt);
   Renderer renderer(loadGltf(s.scenePath), s);
-  MmltEvaluator eval(renderer.context(), 16, 12);
+  PerWorker<MmltEvaluator> eval(1, renderer.context(), 16, 12);
   PssmltSettings settings;
   settings.chains = 24;
-  const std::vector<double> targets = mmltBootstrapTargets(eval, 7, 2000, 0, 1);
+  const std::vector<double> targets = mmltBootstrapTargets(eval[0], 7, 2000, 0, 1);
   std::vector<int> all, even, odd;
   for (int c = 0; c < settings.chains; ++c) (c % 2 ? odd : even).push_back(c), all.push_back(c);
   ChainPool whole(nullptr, &eval, targets, 7, settings, all), evens(nullptr, &eval, targets, 7, settings, even),

@@ -70,3 +70,28 @@ TEST(Workers, AutoThreadsTakeTheRanksShareOfItsCores) {
   EXPECT_GE(coresAvailable(), 1);
   EXPECT_LE(coresAvailable(), coresOnline());
 }
+
+// A rank's share of a bootstrap (samples 1, 4, 7, ... of 3 ranks) split over 1, 2 or 5 workers:
+// every sample computed once, by the worker the rule names, and the same sums bit for bit.
+TEST(Workers, ASplitOfARanksSamplesIsTheSameOnAnyWorkerCount) {
+  const int count = 23;
+  auto value = [](int i) { return 1.0 / (3.0 + i); };  // not exact in binary: order would show
+  std::vector<double> one;
+  for (int workers : {1, 2, 5}) {
+    std::vector<int> computedBy(count, -1);
+    const std::vector<double> sum = sumOfWorkerShares(workers, 1, 3, [&](int w, int first, int stride) {
+      std::vector<double> part(count, 0.0);
+      for (int i = first; i < count; i += stride) {
+        part[size_t(i)] = value(i);
+        computedBy[size_t(i)] = w;
+      }
+      return part;
+    });
+    for (int i = 0; i < count; ++i) {
+      EXPECT_EQ(computedBy[size_t(i)], i % 3 == 1 ? (i / 3) % workers : -1) << i;
+      EXPECT_EQ(sum[size_t(i)], i % 3 == 1 ? value(i) : 0.0) << i;
+    }
+    if (one.empty()) one = sum;
+    EXPECT_EQ(sum, one);
+  }
+}

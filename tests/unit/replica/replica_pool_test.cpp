@@ -25,7 +25,7 @@ struct Fixture {
     s.width = width;
     s.height = height;
     renderer = std::make_unique<Renderer>(loadGltf(test::sourcePath(scene)), s);
-    eval = std::make_unique<PssEvaluator>(renderer->context(), width, height);
+    eval = std::make_unique<PerWorker<PssEvaluator>>(1, renderer->context(), width, height);
     settings.ladders = 3;
     settings.family.kind = FamilyKind::Relaxed;
     settings.family.levels = 5;
@@ -33,9 +33,9 @@ struct Fixture {
     settings.bootstrap = 4000;
   }
   // Every bootstrap sample's features with seed 5, as one rank holds them after the allreduce.
-  std::vector<double> bootstrap() const { return bootstrapFeatures(*eval, settings.family, 5, settings.bootstrap, 0, 1); }
+  std::vector<double> bootstrap() const { return bootstrapFeatures((*eval)[0], settings.family, 5, settings.bootstrap, 0, 1); }
   std::unique_ptr<Renderer> renderer;
-  std::unique_ptr<PssEvaluator> eval;
+  std::unique_ptr<PerWorker<PssEvaluator>> eval;
   ReplicaSettings settings;
 };
 
@@ -82,7 +82,7 @@ TEST(ReplicaPool, TwoSimulatedRanksGiveTheLevelsAndImageOfOne) {
   for (Placement placement : {Placement::Spread, Placement::Packed}) {
     Fixture fx;
     fx.settings.placement = placement;
-    const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+    const std::vector<double> lum = bootstrapFeatures((*fx.eval)[0], fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
     ReplicaPool one(*fx.eval, fx.settings, 5, lum, 0, 1);
     ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
     ASSERT_TRUE(one.active());
@@ -142,7 +142,7 @@ TEST(ReplicaPool, ChainsMovedToAFasterRankContinueAsIfTheyHadStayed) {
     fx.settings.ladders = placement == Placement::Packed ? 8 : 4;
     fx.settings.placement = placement;
     fx.settings.balanceWindow = 10.0;
-    const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+    const std::vector<double> lum = bootstrapFeatures((*fx.eval)[0], fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
     ReplicaPool one(*fx.eval, fx.settings, 5, lum, 0, 1);
     ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
     std::vector<Film> f1(1, Film(16, 12)), fa(1, Film(16, 12)), fb(1, Film(16, 12));
@@ -224,7 +224,7 @@ TEST(RoundLoop, AStopRequestEndsTheLoopAfterTheCurrentRound) {
   for (int askAt : {0, 7, 1000}) {
     Fixture fx;
     fx.settings.placement = placement;
-    const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+    const std::vector<double> lum = bootstrapFeatures((*fx.eval)[0], fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
     const ReplicaSchedule schedule(16.0 * 12.0, 15, 4, std::nullopt, 64.0);  // 820 steps per chain
     ReplicaPool pool(*fx.eval, fx.settings, 5, lum, 0, 1);
     std::vector<Film> films(1, Film(16, 12));
@@ -289,7 +289,7 @@ TEST(ReplicaPool, BalancingUnderALagMovesOnceForOneSpeedDifference) {
   fx.settings.ladders = 8;  // 40 chains, 20 per group, 10 per rank and group at the start
   fx.settings.placement = Placement::Spread;
   fx.settings.balanceWindow = 1.0;
-  const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+  const std::vector<double> lum = bootstrapFeatures((*fx.eval)[0], fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
   TwoRanks t(fx, lum);
   for (uint64_t r = 0; r < uint64_t(fx.settings.normaliserLag) + 60; ++r)
     for (int g = 0; g < t.a.groups(); ++g) t.round(r, g, 0.01 * t.hostedInGroup(0, g), 0.03 * t.hostedInGroup(1, g));
@@ -310,7 +310,7 @@ TEST(ReplicaPool, AnImbalanceHiddenInOneWindowsNoiseIsFoundByMeasuringLonger) {
   // Rank 1 steps a group round in 40 x 11.2 ms = 0.448 s, so a window of this many seconds (it
   // counts group rounds x groups) holds about 8 rounds.
   fx.settings.balanceWindow = 8.0 * 0.448 * 2.0;
-  const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+  const std::vector<double> lum = bootstrapFeatures((*fx.eval)[0], fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
   TwoRanks t(fx, lum);
   for (int g = 0; g < t.a.groups(); ++g) ASSERT_EQ(t.hostedInGroup(0, g), 40);
   uint64_t firstMove = 0;
@@ -334,7 +334,7 @@ TEST(ReplicaPool, AnImbalanceHiddenInOneWindowsNoiseIsFoundByMeasuringLonger) {
 // before the first time comes back; the guess being 25 % low costs a few rounds at most.
 TEST(RoundLoop, ATimeBudgetHoldsWhileTheElapsedTimesAreStillTravelling) {
   Fixture fx;
-  const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+  const std::vector<double> lum = bootstrapFeatures((*fx.eval)[0], fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
   ASSERT_GT(fx.settings.normaliserLag, 20);
   for (double guess : {2.0, 1.5}) {
     ReplicaPool pool(*fx.eval, fx.settings, 5, lum, 0, 1);
@@ -380,7 +380,7 @@ TEST(RoundLoop, ATimeBudgetHoldsAfterAStall) {
 // traceLimit of them, in loop order, and nothing without a limit.
 TEST(RoundLoop, RecordsTheSteppingTimeOfTheFirstGroupRounds) {
   Fixture fx;
-  const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+  const std::vector<double> lum = bootstrapFeatures((*fx.eval)[0], fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
   const ReplicaSchedule schedule(16.0 * 12.0, 15, 4, std::nullopt, 64.0);  // 205 rounds of 2 groups
   for (size_t limit : {size_t(0), size_t(7), size_t(10000)}) {
     ReplicaPool pool(*fx.eval, fx.settings, 5, lum, 0, 1);
@@ -412,7 +412,7 @@ TEST(ReplicaPool, ChainsMovedBeforeARegularisationRefreshContinueAsIfTheyHadStay
   fx.settings.family.regularisation = 0.05;
   fx.settings.family.regularisationDecay = 0.2;
   fx.settings.balanceWindow = 10.0;
-  const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+  const std::vector<double> lum = bootstrapFeatures((*fx.eval)[0], fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
   ReplicaPool one(*fx.eval, fx.settings, 5, lum, 0, 1);
   ReplicaPool a(*fx.eval, fx.settings, 5, lum, 0, 2), b(*fx.eval, fx.settings, 5, lum, 1, 2);
   ASSERT_EQ(one.groups(), 2);
@@ -526,7 +526,7 @@ TEST(ReplicaPool, AGrowingLagKeepsLagLessOneRoundsUnread) {
     fx.settings.placement = placement;
     fx.settings.normaliserLag = 2;
     fx.settings.normaliserLagGrowth = 4;
-    const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+    const std::vector<double> lum = bootstrapFeatures((*fx.eval)[0], fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
     ReplicaPool pool(*fx.eval, fx.settings, 5, lum, 0, 1);
     std::vector<Film> films(1, Film(16, 12));
     Collectives c(pool.groups());
@@ -557,7 +557,7 @@ TEST(ReplicaPool, AResumedRenderIsTheRenderThatNeverStopped) {
       fx.settings.family.regularisation = 0.05;
       fx.settings.family.regularisationDecay = 0.2;
     }
-    const std::vector<double> lum = bootstrapFeatures(*fx.eval, fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+    const std::vector<double> lum = bootstrapFeatures((*fx.eval)[0], fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
     // 8 chains, 1200 pixels: 4 mpp = 600 steps = 60 rounds, 8 mpp = 120 rounds.
     const LoopRun whole = runLoopSized(fx, lum, 8.0, nullptr, 40, 30);
     const LoopRun half = runLoopSized(fx, lum, 4.0, nullptr, 40, 30);
