@@ -1,46 +1,43 @@
 #include "checkpoint_io.h"
 
-#include <mpi.h>
+#include <chrono>
 
 #include "checkpoint/checkpoint.h"
-#include "comm.h"
 #include "core/error.h"
 #include "core/words.h"
 
 namespace relt::mpi {
 namespace {
 
-bool isRoot() {
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  return rank == 0;
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 CheckpointTally g_tally;
 
 }  // namespace
 
-void saveCheckpoint(const CheckpointPlan& plan, const char* integrator, const nlohmann::json& progress,
+void saveCheckpoint(Job& job, const CheckpointPlan& plan, const char* integrator, const nlohmann::json& progress,
                     std::span<const Film> films, const std::vector<uint64_t>& part) {
-  const double start = MPI_Wtime();
+  const auto start = std::chrono::steady_clock::now();
   std::vector<const std::vector<double>*> sums;
   for (const Film& f : films) sums.push_back(&f.data());
   if (plan.directFilm) sums.push_back(&plan.directFilm->data());
-  const std::vector<std::vector<uint64_t>> parts = gatherToRoot(part);
+  const std::vector<std::vector<uint64_t>> parts = job.gatherToRoot(part);
   // The films are reduced straight into the root's words: a large film is copied once, not thrice.
   const size_t length = sums.empty() ? 0 : sums[0]->size();
   size_t words = 3 + sums.size() * length;
   for (const std::vector<uint64_t>& p : parts) words += 1 + p.size();
   WordWriter w;
-  if (isRoot()) {
+  if (job.isRoot()) {
     w.reserve(words);
     w.u64(sums.size());
     w.u64(length);
   }
   for (const std::vector<double>* s : sums)
-    reduceSumToRoot(*s, isRoot() ? reinterpret_cast<double*>(w.slots(s->size())) : nullptr);
+    job.reduceSumToRoot(*s, job.isRoot() ? reinterpret_cast<double*>(w.slots(s->size())) : nullptr);
   std::string problem;
-  if (isRoot()) {
+  if (job.isRoot()) {
     Checkpoint c;
     c.header = {{"format", 1},          {"integrator", integrator}, {"ranks", parts.size()},
                 {"progress", progress}, {"identity", plan.identity}, {"settings", plan.settings}};
@@ -54,19 +51,19 @@ void saveCheckpoint(const CheckpointPlan& plan, const char* integrator, const nl
       problem = std::string(e.what()) + "; the render stops here (an earlier checkpoint in " + plan.dir + " is intact)";
     }
   }
-  shareRootProblem(problem);
+  job.shareRootProblem(problem);
   ++g_tally.written;
-  g_tally.seconds += MPI_Wtime() - start;
+  g_tally.seconds += secondsSince(start);
 }
 
 const CheckpointTally& checkpointTally() { return g_tally; }
 
-Resumed loadCheckpoint(const CheckpointPlan& plan, const char* integrator) {
+Resumed loadCheckpoint(Job& job, const CheckpointPlan& plan, const char* integrator) {
   Resumed out;
   out.file = checkpointFile(plan.resume);
   std::vector<uint64_t> parts;
   std::string problem, header;
-  if (isRoot()) {
+  if (job.isRoot()) {
     try {
       const Checkpoint c = readCheckpoint(plan.resume);
       if (c.header.value("integrator", "") != integrator)
@@ -87,9 +84,9 @@ Resumed loadCheckpoint(const CheckpointPlan& plan, const char* integrator) {
       problem = out.file + ": the checkpoint does not read as one (" + e.what() + ")";
     }
   }
-  shareRootProblem(problem);
-  broadcastFromRoot(parts);
-  broadcastFromRoot(header);
+  job.shareRootProblem(problem);
+  job.broadcastFromRoot(parts);
+  job.broadcastFromRoot(header);
   const nlohmann::json h = nlohmann::json::parse(header);
   out.progress = h.at("progress");
   out.filmCount = h.at("films").get<size_t>();
@@ -105,7 +102,7 @@ void Resumed::restoreFilms(std::span<Film> into) const {
   for (size_t k = 0; k < films.size(); ++k) into[k].data() = films[k];
 }
 
-std::vector<double> Resumed::takeLastFilm() {
+std::vector<double> Resumed::takeLastFilm(Job& job) {
   if (filmCount == 0) throw InputError(file, "", "the checkpoint's films do not match this render's");
   std::vector<double> last(filmLength);
   if (!films.empty()) {
@@ -113,7 +110,7 @@ std::vector<double> Resumed::takeLastFilm() {
     films.pop_back();
   }
   --filmCount;
-  broadcastFromRoot(last);
+  job.broadcastFromRoot(last);
   return last;
 }
 

@@ -11,6 +11,7 @@
 
 #include "checkpoint/checkpoint.h"
 #include "film/film.h"
+#include "parallel/job.h"
 
 namespace relt::mpi {
 
@@ -36,7 +37,7 @@ struct Resumed {
   // throws InputError on every rank if their number or size differs.
   void restoreFilms(std::span<Film> films) const;
   // Takes the last film out (the direct-emission pass) and returns it on every rank (collective).
-  std::vector<double> takeLastFilm();
+  std::vector<double> takeLastFilm(Job& job);
 };
 
 // Whether the pass or round that just ended writes a checkpoint: the plan has a folder, and the
@@ -49,7 +50,7 @@ inline bool checkpointNow(const CheckpointPlan& plan, double elapsed, double& la
 
 // `progress` is the integrator's (rounds or passes, elapsed time, ...); `part` this rank's state.
 // The plan's direct-emission pass, if any, is added to both.
-void saveCheckpoint(const CheckpointPlan& plan, const char* integrator, const nlohmann::json& progress,
+void saveCheckpoint(Job& job, const CheckpointPlan& plan, const char* integrator, const nlohmann::json& progress,
                     std::span<const Film> films, const std::vector<uint64_t>& part);
 // Checkpoints this process wrote (or took part in) and the seconds they took, for stats.json.
 struct CheckpointTally {
@@ -59,6 +60,6 @@ struct CheckpointTally {
 const CheckpointTally& checkpointTally();
 
 // Refuses a checkpoint of another integrator, scene or settings (before any rendering work).
-Resumed loadCheckpoint(const CheckpointPlan& plan, const char* integrator);
+Resumed loadCheckpoint(Job& job, const CheckpointPlan& plan, const char* integrator);
 
 }  // namespace relt::mpi

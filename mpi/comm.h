@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "parallel/job.h"
+
 namespace relt::mpi {
 
 class Session {
@@ -41,14 +43,9 @@ double allreduceMax(double value);
 double allreduceSum(double value);
 uint64_t allreduceSum(uint64_t value);
 int allreduceMax(int value);
-// What the ranks decide together after a pass or round: the largest elapsed time, whether any
-// rank was signalled to stop (then stopAgreed() in interrupt.h holds from here on), and whether
-// any was asked to save (SIGCONT: write the image so far and a checkpoint now).
-struct Agreement {
-  double elapsed = 0.0;
-  bool stop = false;
-  bool save = false;
-};
+// The ranks' agreement after a pass or round (Job::agree); a stop agreed makes stopAgreed() in
+// interrupt.h hold from here on.
+using Agreement = JobAgreement;
 Agreement agree(double elapsed);
 // Wall-clock seconds spent inside collectives by this rank, accumulated by the functions above.
 double collectiveSeconds();
@@ -66,10 +63,6 @@ namespace relt::mpi {
 // Point-to-point payloads of any length: `sends` go out (rank, data), and one payload arrives from
 // each rank of `receiveFrom`, returned in that order. Between two ranks payloads keep their order.
 // Counted as collective time (every rank of a plan takes part).
-struct Payload {
-  int rank;
-  std::vector<uint64_t> data;
-};
 // While waiting, `idle` (if any) runs between tests (the request channel's poll).
 std::vector<std::vector<uint64_t>> transfer(const std::vector<Payload>& sends, const std::vector<int>& receiveFrom,
                                             const std::function<void()>& idle = {});
@@ -82,18 +75,18 @@ namespace relt::mpi {
 // Every rank's buffer, in rank order, on every rank, by a nonblocking MPI_Iallgatherv: started by
 // the constructor, completed by wait() (the time in wait counts as collective time); lengths[r] is
 // rank r's buffer length, known to all in advance. Not movable: MPI holds the buffers until then.
-class PendingAllgatherv {
+class PendingAllgatherv final : public PendingGather {
  public:
   PendingAllgatherv(std::vector<double> mine, const std::vector<size_t>& lengths);
   PendingAllgatherv(const PendingAllgatherv&) = delete;
   PendingAllgatherv& operator=(const PendingAllgatherv&) = delete;
   ~PendingAllgatherv();
   // Every rank's buffer, in rank order; `idle` (if any) runs between tests while waiting.
-  std::vector<std::vector<double>> wait(const std::function<void()>& idle = {});
+  std::vector<std::vector<double>> wait(const std::function<void()>& idle = {}) override;
   // Lets MPI advance the collective (Open MPI moves a nonblocking collective only inside MPI calls).
-  void test();
+  void test() override;
   // Completes it, counted as collective time (wait() then returns at once); `idle` as for wait().
-  void complete(const std::function<void()>& idle = {});
+  void complete(const std::function<void()>& idle = {}) override;
 
  private:
   std::vector<double> mine_, all_;

@@ -24,20 +24,20 @@ void keepOwnRows(const std::vector<double>& all, Film& film, int firstRow, int r
 
 // The pass a checkpoint holds: its film rows (none kept for no pass) into `out`, where it got to
 // (spp, seconds, dropped).
-DirectPassStart restorePass(Resumed& resumed, const Session& session, DirectEstimate& out) {
+DirectPassStart restorePass(Resumed& resumed, Job& job, DirectEstimate& out) {
   const nlohmann::json& d = resumed.progress.at("direct");
   if (d.at("spp").get<int>() > 0)
-    keepOwnRows(resumed.takeLastFilm(), out.film, session.rank(), session.size(), resumed.file);
+    keepOwnRows(resumed.takeLastFilm(job), out.film, job.rank(), job.size(), resumed.file);
   out.inChains = d.at("in_chains").get<bool>();
   out.dropped = d.at("dropped").get<uint64_t>();
   return {d.at("spp").get<int>(), d.at("seconds").get<double>()};
 }
 
 // The pass's image of `spp` rays per pixel on the root (empty elsewhere and for none; collective).
-Image reducedImage(const Session& session, const Film& film, int spp) {
+Image reducedImage(Job& job, const Film& film, int spp) {
   std::vector<double> sums = film.data();
-  reduceSumToRoot(sums);
-  return session.isRoot() && spp > 0 ? Renderer::resolve(film, sums, spp) : Image();
+  job.reduceSumToRoot(sums);
+  return job.isRoot() && spp > 0 ? Renderer::resolve(film, sums, spp) : Image();
 }
 
 nlohmann::json directProgress(int spp, double seconds, bool inChains, uint64_t dropped) {
@@ -46,7 +46,7 @@ nlohmann::json directProgress(int spp, double seconds, bool inChains, uint64_t d
 
 // A checkpoint of the pass so far (no chain yet) and, on a save request, the image of it.
 struct PassSaver {
-  const Session& session;
+  Job& job;
   const RenderSettings& settings;
   const CheckpointPlan& plan;
   const std::function<void(const Image&)>& snapshot;
@@ -58,7 +58,7 @@ struct PassSaver {
   // The root's progress line, once a second: the share of the rays per pixel it will take (of a
   // timed pass's share of the budget) done.
   void print(const DirectPass& sofar) {
-    if (!session.isRoot() || sofar.seconds - lastPrint < 1.0) return;
+    if (!job.isRoot() || sofar.seconds - lastPrint < 1.0) return;
     lastPrint = sofar.seconds;
     const int target = settings.directSpp > 0 ? settings.directSpp
                        : settings.seconds     ? 0
@@ -73,14 +73,14 @@ struct PassSaver {
   void chunkDone(const DirectPass& sofar, bool save) {
     print(sofar);
     if (save && !sofar.stopped) {  // a stopped render writes its image at the end
-      const Image image = reducedImage(session, out.film, sofar.spp);
-      if (session.isRoot()) snapshot(image);
+      const Image image = reducedImage(job, out.film, sofar.spp);
+      if (job.isRoot()) snapshot(image);
     }
     if (!checkpointNow(plan, sofar.seconds, lastCheckpoint, !sofar.stopped, save)) return;
     CheckpointPlan p = plan;
     p.directFilm = &out.film;
-    p.direct = directProgress(sofar.spp, sofar.seconds, false, out.dropped + allreduceSum(out.film.droppedSamples()));
-    saveCheckpoint(p, integratorName(settings.integrator), {{"phase", "direct"}}, {}, {});
+    p.direct = directProgress(sofar.spp, sofar.seconds, false, out.dropped + job.allreduceSum(out.film.droppedSamples()));
+    saveCheckpoint(job, p, integratorName(settings.integrator), {{"phase", "direct"}}, {}, {});
   }
 };
 
@@ -88,7 +88,7 @@ struct PassSaver {
 
 nlohmann::json DirectEstimate::progress() const { return directProgress(spp, seconds, inChains, dropped); }
 
-DirectEstimate directEmission(const Session& session, Renderer& renderer, const RenderSettings& settings,
+DirectEstimate directEmission(Job& job, Renderer& renderer, const RenderSettings& settings,
                               const CheckpointPlan& plan, std::optional<Resumed>& resumed,
                               const std::function<void(const Image&)>& snapshot) {
   DirectEstimate out;
@@ -97,34 +97,34 @@ DirectEstimate directEmission(const Session& session, Renderer& renderer, const 
   DirectPassStart start;
   // A checkpoint of an earlier release has no "direct": its pass is rendered again.
   if (resumed && resumed->progress.contains("direct")) {
-    start = restorePass(*resumed, session, out);
+    start = restorePass(*resumed, job, out);
     if (resumed->progress.value("phase", "") == "direct") {
       resumed.reset();  // the pass alone: it goes on, then the chains start afresh
     } else {           // the chains': the pass is done
       out.spp = start.spp;
       out.seconds = start.seconds;
       if (out.inChains) renderer.keepDirectEmissionInChains();
-      out.image = reducedImage(session, out.film, out.spp);
+      out.image = reducedImage(job, out.film, out.spp);
       return out;
     }
   }
-  PassSaver saver{session, settings, plan, snapshot, out, start.seconds};
-  RankReduce reduce{[](double v) { return allreduceMax(v); }, [](double v) { return allreduceSum(v); }};
-  reduce.agree = [](double elapsed) {
-    const Agreement a = agree(elapsed);
+  PassSaver saver{job, settings, plan, snapshot, out, start.seconds};
+  RankReduce reduce{[&job](double v) { return job.allreduceMax(v); }, [&job](double v) { return job.allreduceSum(v); }};
+  reduce.agree = [&job](double elapsed) {
+    const JobAgreement a = job.agree(elapsed);
     return ChunkAgreement{a.elapsed, a.stop, a.save};
   };
   reduce.chunkDone = [&](const DirectPass& sofar, bool save) { saver.chunkDone(sofar, save); };
-  const DirectPass pass = renderDirectPass(renderer, session.rank(), session.size(), out.film, reduce, start);
+  const DirectPass pass = renderDirectPass(renderer, job.rank(), job.size(), out.film, reduce, start);
   if (saver.lastPrint > 0.0 && saver.tty) std::fprintf(stderr, "\n");
-  out.image = reducedImage(session, out.film, pass.spp);
+  out.image = reducedImage(job, out.film, pass.spp);
   out.spp = pass.spp;
   out.inChains = pass.spp == 0;
   out.stopped = pass.stopped;
-  out.dropped += allreduceSum(out.film.droppedSamples());
+  out.dropped += job.allreduceSum(out.film.droppedSamples());
   out.seconds = pass.seconds;
   // It is not cut short (a part of the image would lack it), so a large N can eat a short budget.
-  if (session.isRoot() && settings.seconds && out.seconds > 0.5 * *settings.seconds)
+  if (job.isRoot() && settings.seconds && out.seconds > 0.5 * *settings.seconds)
     std::fprintf(stderr,
                  "relt: warning: --direct-emission-spp %d took %.1f s of the %.1f s budget, leaving the chains %.1f s\n",
                  pass.spp, out.seconds, *settings.seconds, std::max(0.0, *settings.seconds - out.seconds));

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "checkpoint_io.h"
-#include "comm.h"
+#include "parallel/job.h"
 #include "film/film.h"
 #include "image/image.h"
 #include "render/renderer.h"
@@ -32,7 +32,7 @@ struct DirectEstimate {
 // a checkpoint of the chains (their films and parts stay). During the pass a save request (SIGCONT)
 // writes `snapshot` (the root's image of the pass so far) and, like a due --checkpoint-every or a
 // stop, a checkpoint of the pass alone. Collective.
-DirectEstimate directEmission(const Session& session, Renderer& renderer, const RenderSettings& settings,
+DirectEstimate directEmission(Job& job, Renderer& renderer, const RenderSettings& settings,
                               const CheckpointPlan& plan, std::optional<Resumed>& resumed,
                               const std::function<void(const Image&)>& snapshot);
 

@@ -13,27 +13,27 @@
 namespace relt::mpi {
 namespace {
 
-ErptCounters sumOverRanks(const ErptCounters& local) {
+ErptCounters sumOverRanks(Job& job, const ErptCounters& local) {
   ErptCounters s = local;
   uint64_t* const fields[] = {&s.seeds, &s.chains, &s.mutations, &s.accepted, &s.invalidProposals};
   std::vector<double> v;
   for (uint64_t* f : fields) v.push_back(double(*f));
-  allreduceSum(v);  // one collective; exact, counts stay far below 2^53
+  job.allreduceSum(v);  // one collective; exact, counts stay far below 2^53
   for (size_t k = 0; k < v.size(); ++k) *fields[k] = uint64_t(v[k]);
   return s;
 }
 
 // The checkpoint's root part at `at`: the normaliser (a resume does not run the bootstrap again),
 // the counters summed over ranks and the proposal tallies, reduced here; other ranks' parts are empty.
-std::vector<uint64_t> checkpointPart(const Session& session, const PassFilm& film, PassPoint at, double normaliser,
+std::vector<uint64_t> checkpointPart(Job& job, const PassFilm& film, PassPoint at, double normaliser,
                                      const ErptCounters& c) {
   std::vector<std::vector<double>> tallies;
   for (const std::vector<double>& t : film.checkpointTallies(at)) {
     tallies.push_back(t);
-    reduceSumToRoot(tallies.back());
+    job.reduceSumToRoot(tallies.back());
   }
   WordWriter w;
-  if (!session.isRoot()) return w.words();
+  if (!job.isRoot()) return w.words();
   w.f64(normaliser);
   for (uint64_t v : {c.seeds, c.chains, c.mutations, c.accepted, c.invalidProposals}) w.u64(v);
   for (const std::vector<double>& t : tallies) w.f64s(t);
@@ -41,7 +41,7 @@ std::vector<uint64_t> checkpointPart(const Session& session, const PassFilm& fil
 }
 
 // The root takes the sums of the checkpoint, the other ranks start from zero; all take the normaliser.
-PassStart restore(const Session& session, const Resumed& resumed, PassFilm& film, ErptOutcome& out,
+PassStart restore(Job& job, const Resumed& resumed, PassFilm& film, ErptOutcome& out,
                   ErptCounters& local) {
   const PassStart start = passStartOf(resumed.progress);
   resumed.restoreFilms(film.checkpointFilms(start.at));
@@ -54,7 +54,7 @@ PassStart restore(const Session& session, const Resumed& resumed, PassFilm& film
     std::vector<std::vector<double>> tallies;
     for (const std::vector<double>& t : film.checkpointTallies(start.at)) tallies.push_back(in.f64s(t.size()));
     if (!in.done()) throw std::runtime_error("the checkpoint's erpt state does not match this render's");
-    if (session.isRoot()) {
+    if (job.isRoot()) {
       local = c;
       for (size_t k = 0; k < tallies.size(); ++k) film.checkpointTallies(start.at)[k] = std::move(tallies[k]);
     }
@@ -67,12 +67,12 @@ PassStart restore(const Session& session, const Resumed& resumed, PassFilm& film
 
 // The image at `at` on the root (empty elsewhere; collective): what the film shows there, by its
 // seeds per pixel, the proposal filter applied if asked.
-Image imageSoFar(const Session& session, const PassFilm& film, PassPoint at) {
-  Image image = reducedPassImage(session, film, at);
+Image imageSoFar(Job& job, const PassFilm& film, PassPoint at) {
+  Image image = reducedPassImage(job, film, at);
   std::vector<double> tally = film.tallyShown(at);
   if (tally.empty()) return image;
-  reduceSumToRoot(tally);
-  if (session.isRoot()) applyProposalFilter(image, tally);
+  job.reduceSumToRoot(tally);
+  if (job.isRoot()) applyProposalFilter(image, tally);
   return image;
 }
 
@@ -84,7 +84,7 @@ PassFilm erptFilm(const RenderSettings& settings) {
                   settings.erptProposalFilter ? pixels : 0, settings.threads);
 }
 
-ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, PassFilm& film,
+ErptOutcome runErpt(Job& job, Renderer& renderer, const RenderSettings& settings, PassFilm& film,
                     const std::function<void(const Image&)>& snapshot, const CheckpointPlan& plan,
                     const Resumed* resumed) {
   const ErptSettings es = erptSettings(settings);
@@ -94,9 +94,9 @@ ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSett
   ErptCounters local;
   PassStart start;
   if (resumed)
-    start = restore(session, *resumed, film, out, local);
+    start = restore(job, *resumed, film, out, local);
   else
-    out.normaliser = allreduceSum(erptBootstrapSum(eval, settings.seed, bootstrap, session.rank(), session.size())) /
+    out.normaliser = job.allreduceSum(erptBootstrapSum(eval, settings.seed, bootstrap, job.rank(), job.size())) /
                      bootstrap;
   // Passes of one seed per pixel, distributed and timed as pt's.
   PassHooks hooks;
@@ -113,26 +113,26 @@ ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSett
   };
   // This run's mutations per second (a resumed root's counters hold the earlier runs' too).
   hooks.rate = [&, earlier = local.mutations, since = start.elapsed](double elapsed) {
-    return double(counted().mutations - earlier) * session.size() / std::max(elapsed - since, 1e-9);
+    return double(counted().mutations - earlier) * job.size() / std::max(elapsed - since, 1e-9);
   };
   hooks.rateUnit = "mutations";
   if (snapshot)
     hooks.snapshot = [&](PassPoint at) {
-      const Image image = imageSoFar(session, film, at);
-      if (session.isRoot()) snapshot(image);
+      const Image image = imageSoFar(job, film, at);
+      if (job.isRoot()) snapshot(image);
     };
   hooks.chunkDone = [&, lastCheckpoint = start.elapsed](PassPoint at, double elapsed, bool more, bool save) mutable {
     if (!checkpointNow(plan, elapsed, lastCheckpoint, more, save)) return;
     film.gatherWorkers();
-    const ErptCounters sums = sumOverRanks(counted());
+    const ErptCounters sums = sumOverRanks(job, counted());
     nlohmann::json progress = passProgress(at, elapsed);
     progress["mutations"] = sums.mutations;
-    saveCheckpoint(plan, "erpt", progress, film.checkpointFilms(at),
-                   checkpointPart(session, film, at, out.normaliser, sums));
+    saveCheckpoint(job, plan, "erpt", progress, film.checkpointFilms(at),
+                   checkpointPart(job, film, at, out.normaliser, sums));
   };
-  out.end = runPasses(session, settings, film, hooks, start);
-  out.image = imageSoFar(session, film, out.end);
-  out.counters = sumOverRanks(counted());
+  out.end = runPasses(job, settings, film, hooks, start);
+  out.image = imageSoFar(job, film, out.end);
+  out.counters = sumOverRanks(job, counted());
   return out;
 }
 

@@ -3,7 +3,7 @@
 #include <functional>
 
 #include "checkpoint_io.h"
-#include "comm.h"
+#include "parallel/job.h"
 #include "film/film.h"
 #include "mcmc/erpt.h"
 #include "pass_loop.h"
@@ -26,7 +26,7 @@ PassFilm erptFilm(const RenderSettings& settings);
 // any) gets the image so far on a save request and every --snapshot-every seconds. `plan` writes
 // checkpoints (films, passes, counters, normaliser, proposal tallies); a render resumed from
 // `resumed` (or null) continues where it stopped without running the bootstrap again.
-ErptOutcome runErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, PassFilm& film,
+ErptOutcome runErpt(Job& job, Renderer& renderer, const RenderSettings& settings, PassFilm& film,
                     const std::function<void(const Image&)>& snapshot = {}, const CheckpointPlan& plan = {},
                     const Resumed* resumed = nullptr);
 

@@ -9,6 +9,7 @@
 
 #include "comm.h"
 #include "interrupt.h"
+#include "mpi_job.h"
 #include "core/error.h"
 #include "image/compare.h"
 #include "image/image.h"
@@ -359,7 +360,7 @@ int main(int argc, char** argv) {
   const bool root = session.isRoot();
 
   CLI::App app{"relt: replica-exchange light transport renderer (glTF 2.0 in, OpenEXR or PNG out), distributed with MPI.\n"
-               "Run under mpirun for several ranks; a plain run is one rank (pt, bdpt and erpt use a thread per core)."};
+               "Run under mpirun for several ranks; a plain run is one rank with a thread per core it may use."};
   app.require_subcommand(1);
   Options o;
   CLI::App* render = app.add_subcommand("render", "render a scene");
@@ -405,7 +406,8 @@ int main(int argc, char** argv) {
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
     if (o.threads->count() == 0) o.render.threads = threadsOnAuto();
     relt::mpi::startStallWatchdog(o.stallTimeout);
-    relt::mpi::runRender(session, o.render, o.checkpoint);
+    relt::mpi::MpiJob job(session);
+    relt::mpi::runRender(job, o.render, o.checkpoint);
     return 0;
   } catch (const relt::InputError& e) {
     if (root) std::fprintf(stderr, "relt: error: %s\n", e.what());

@@ -18,7 +18,7 @@ namespace {
 
 // The root's progress line: passes done (and the share of the current one) of the budget.
 struct ProgressPrinter {
-  const Session& session;
+  Job& job;
   const RenderSettings& settings;
   const std::function<double(double)>& rate;
   const char* unit;
@@ -27,7 +27,7 @@ struct ProgressPrinter {
   bool printed = false;
 
   void print(PassPoint at, double elapsed) {
-    if (!rate || !session.isRoot() || elapsed - lastPrint < 1.0) return;
+    if (!rate || !job.isRoot() || elapsed - lastPrint < 1.0) return;
     lastPrint = elapsed;
     printed = true;
     const double passes = at.passes + double(at.rows) / std::max(settings.height, 1);
@@ -41,11 +41,11 @@ struct ProgressPrinter {
 };
 
 // The units of rows first .. end - 1 of pass `pass` this rank owns, dealt in turn to its workers.
-void renderChunk(const Session& session, const RenderSettings& settings, const PassHooks& hooks, int pass, int first,
+void renderChunk(Job& job, const RenderSettings& settings, const PassHooks& hooks, int pass, int first,
                  int end) {
   std::vector<int> rows;
   for (int row = first; row < end; ++row)
-    if (ownsUnit(uint64_t(pass), row, settings.height, session.rank(), session.size())) rows.push_back(row);
+    if (ownsUnit(uint64_t(pass), row, settings.height, job.rank(), job.size())) rows.push_back(row);
   const int workers = std::clamp(settings.threads, 1, std::max(int(rows.size()), 1));
   runOnWorkers(workers, [&](int w) {
     for (size_t k = size_t(w); k < rows.size(); k += size_t(workers)) hooks.renderUnit(uint64_t(pass), rows[k]);
@@ -62,14 +62,14 @@ PassStart passStartOf(const nlohmann::json& progress) {
   return {{progress.at("passes").get<int>(), progress.value("rows", 0)}, progress.at("elapsed").get<double>()};
 }
 
-Image reducedPassImage(const Session& session, const PassFilm& film, PassPoint at) {
+Image reducedPassImage(Job& job, const PassFilm& film, PassPoint at) {
   std::vector<double> sums = film.sumsShown(at);
-  reduceSumToRoot(sums);
+  job.reduceSumToRoot(sums);
   const PassPoint shown = film.shown(at);
-  return session.isRoot() ? Renderer::resolve(film.live(), sums, shown.passes, shown.rows) : Image();
+  return job.isRoot() ? Renderer::resolve(film.live(), sums, shown.passes, shown.rows) : Image();
 }
 
-PassPoint runPasses(const Session& session, const RenderSettings& settings, PassFilm& film, const PassHooks& hooks,
+PassPoint runPasses(Job& job, const RenderSettings& settings, PassFilm& film, const PassHooks& hooks,
                     const PassStart& start) {
   using Clock = std::chrono::steady_clock;
   const auto clockStart = Clock::now();
@@ -87,11 +87,11 @@ PassPoint runPasses(const Session& session, const RenderSettings& settings, Pass
   };
   // A pass begun (and checkpointed inside) is finished whatever the budget: it was started within it.
   if (at.rows == 0 && !another()) return at;
-  ProgressPrinter printer{session, settings, hooks.rate, hooks.rateUnit, start.elapsed};
+  ProgressPrinter printer{job, settings, hooks.rate, hooks.rateUnit, start.elapsed};
   int chunk = kFirstPassChunkRows;
   for (;;) {
     const int first = at.rows, end = std::min(height, first + chunk);
-    renderChunk(session, settings, hooks, at.passes, first, end);
+    renderChunk(job, settings, hooks, at.passes, first, end);
     at.rows = end;
     const bool passEnd = end == height;
     if (passEnd) {
@@ -99,7 +99,7 @@ PassPoint runPasses(const Session& session, const RenderSettings& settings, Pass
       film.passEnded();
     }
     // The ranks agree after every chunk, so all stop, snapshot and checkpoint at the same point.
-    const Agreement agreed = agree(since());
+    const JobAgreement agreed = job.agree(since());
     const double elapsed = agreed.elapsed;
     chunk = nextPassChunk(end - first, elapsed - chunkStart, height);
     chunkStart = elapsed;

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "comm.h"
+#include "parallel/job.h"
 #include "film/film.h"
 #include "image/image.h"
 #include "render/pass_film.h"
@@ -32,7 +32,7 @@ PassStart passStartOf(const nlohmann::json& progress);
 
 // The image at `at` on the root (empty elsewhere; collective): the ranks' sums of what `film`
 // shows there, summed, each row divided by its own samples.
-Image reducedPassImage(const Session& session, const PassFilm& film, PassPoint at);
+Image reducedPassImage(Job& job, const PassFilm& film, PassPoint at);
 
 struct PassHooks {
   // Every owned unit of every pass, on the rank's worker threads at once (settings.threads): worker
@@ -53,7 +53,7 @@ struct PassHooks {
 // Runs the passes and returns where they ended: whole passes, or inside one if a rank was stopped.
 // `film` (which renderUnit fills) is told of every pass end before the hooks see it, and has the
 // workers' sums gathered before a snapshot and at the end.
-PassPoint runPasses(const Session& session, const RenderSettings& settings, PassFilm& film, const PassHooks& hooks,
+PassPoint runPasses(Job& job, const RenderSettings& settings, PassFilm& film, const PassHooks& hooks,
                     const PassStart& start = {});
 
 }  // namespace relt::mpi

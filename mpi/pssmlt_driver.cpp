@@ -23,10 +23,10 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-std::vector<int> ownedChains(const Session& session, int chains) {
+std::vector<int> ownedChains(Job& job, int chains) {
   std::vector<int> mine;
   for (int c = 0; c < chains; ++c)
-    if (ownsChain(c, session.rank(), session.size())) mine.push_back(c);
+    if (ownsChain(c, job.rank(), job.size())) mine.push_back(c);
   return mine;
 }
 
@@ -58,7 +58,7 @@ std::vector<double> restoredTargets(const Resumed& resumed, std::vector<std::vec
 // round loop that runs them (collective).
 class ChainRender {
  public:
-  ChainRender(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
+  ChainRender(Job& job, Renderer& renderer, const RenderSettings& settings, Film& film,
               const CheckpointPlan& plan, const Resumed* resumed);
   // Rounds until the budget is spent or the ranks agree to stop; snapshots and checkpoints between.
   void loop(const SnapshotWriter& snapshot);
@@ -71,7 +71,7 @@ class ChainRender {
   void writeSnapshot(const SnapshotWriter& snapshot);
   void writeCheckpoint(double elapsed);
 
-  const Session& session_;
+  Job& job_;
   const RenderSettings& settings_;
   Film& film_;
   const CheckpointPlan& plan_;
@@ -90,9 +90,9 @@ class ChainRender {
   double elapsed_ = 0.0;  // the agreed seconds of chain rendering, over all sittings
 };
 
-ChainRender::ChainRender(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
+ChainRender::ChainRender(Job& job, Renderer& renderer, const RenderSettings& settings, Film& film,
                          const CheckpointPlan& plan, const Resumed* resumed)
-    : session_(session),
+    : job_(job),
       settings_(settings),
       film_(film),
       plan_(plan),
@@ -103,12 +103,12 @@ ChainRender::ChainRender(const Session& session, Renderer& renderer, const Rende
       mmltEval_(mmlt_ ? settings.threads : 0, renderer.context(), settings.width, settings.height),
       targets_(bootstrap(resumed)),
       pool_(mmlt_ ? nullptr : &eval_, mmlt_ ? &mmltEval_ : nullptr, targets_, settings.seed, ps_,
-            ownedChains(session, ps_.chains)),
+            ownedChains(job, ps_.chains)),
       schedule_(area_, ps_.chains, settings.seconds,
                 static_cast<uint64_t>(std::llround(ps_.mutationsPerPixel * area_))) {
   for (double t : targets_) bootstrapSum_ += t;
   if (resumed) restore(*resumed);
-  elapsed_ += allreduceMax(since(start_));
+  elapsed_ += job.allreduceMax(since(start_));
 }
 
 // Sample i on rank i mod P (and there on one of its workers); every rank then holds all targets
@@ -125,8 +125,8 @@ std::vector<double> ChainRender::bootstrap(const Resumed* resumed) {
     return mmlt_ ? mmltBootstrapTargets(mmltEval_[w], settings_.seed, ps_.bootstrap, first, stride)
                  : bootstrapTargets(eval_[w], settings_.seed, ps_.bootstrap, first, stride);
   };
-  std::vector<double> targets = sumOfWorkerShares(settings_.threads, session_.rank(), session_.size(), share);
-  allreduceSum(targets);
+  std::vector<double> targets = sumOfWorkerShares(mmlt_ ? mmltEval_.size() : eval_.size(), job_.rank(), job_.size(), share);
+  job_.allreduceSum(targets);
   return targets;
 }
 
@@ -150,8 +150,8 @@ void ChainRender::restore(const Resumed& resumed) {
 
 double ChainRender::normaliser(std::vector<ChainCounters>* perDepthOut, ChainCounters* countersOut) {
   std::vector<ChainCounters> perDepth;
-  for (const ChainCounters& c : pool_.perDepth()) perDepth.push_back(sumOverRanks(c));
-  const ChainCounters counters = sumOverRanks(pool_.counters());
+  for (const ChainCounters& c : pool_.perDepth()) perDepth.push_back(sumOverRanks(job_, c));
+  const ChainCounters counters = sumOverRanks(job_, pool_.counters());
   if (perDepthOut) *perDepthOut = perDepth;
   if (countersOut) *countersOut = counters;
   return mmlt_ ? mmltNormaliser(targets_, settings_.maxDepth, perDepth)
@@ -164,8 +164,8 @@ void ChainRender::writeSnapshot(const SnapshotWriter& snapshot) {
   Film merged = film_;
   if (mmlt_) pool_.mergeDepthFilms(mmltDepthWeights(targets_, settings_.maxDepth, perDepth), merged);
   std::vector<double> sums = std::move(merged.data());
-  reduceSumToRoot(sums);
-  if (session_.isRoot()) snapshot(sums, pssmltResolveDivisor(schedule_.mutationsAfter(rounds_), b, area_));
+  job_.reduceSumToRoot(sums);
+  if (job_.isRoot()) snapshot(sums, pssmltResolveDivisor(schedule_.mutationsAfter(rounds_), b, area_));
 }
 
 void ChainRender::writeCheckpoint(double elapsed) {
@@ -173,8 +173,8 @@ void ChainRender::writeCheckpoint(double elapsed) {
   for (const Film& f : pool_.depthFilms(film_.width(), film_.height())) films.push_back(f);
   const nlohmann::json progress = {
       {"rounds", rounds_}, {"elapsed", elapsed}, {"mutations", schedule_.mutationsAfter(rounds_)}};
-  saveCheckpoint(plan_, integratorName(settings_.integrator), progress, films,
-                 checkpointPart(session_.isRoot(), targets_, pool_));
+  saveCheckpoint(job_, plan_, integratorName(settings_.integrator), progress, films,
+                 checkpointPart(job_.isRoot(), targets_, pool_));
 }
 
 void ChainRender::loop(const SnapshotWriter& snapshot) {
@@ -183,7 +183,7 @@ void ChainRender::loop(const SnapshotWriter& snapshot) {
   bool printed = false;
   const double sittingStart = elapsed_ - since(start_);  // this process's clock, continuing the earlier time
   const bool tty = ::isatty(STDERR_FILENO);
-  const bool anyChains = allreduceMax(pool_.size() > 0 ? 1 : 0) > 0;
+  const bool anyChains = job_.allreduceMax(pool_.size() > 0 ? 1 : 0) > 0;
   bool more = anyChains && schedule_.anotherRound(rounds_, elapsed_, pace.typical());
   while (more) {
     std::vector<uint64_t> steps;
@@ -191,11 +191,11 @@ void ChainRender::loop(const SnapshotWriter& snapshot) {
       steps.push_back(schedule_.doneAfter(rounds_ + 1, c) - schedule_.doneAfter(rounds_, c));
     if (pool_.size() > 0) pool_.run(steps, film_);
     ++rounds_;
-    const Agreement agreed = agree(sittingStart + since(start_));
+    const JobAgreement agreed = job_.agree(sittingStart + since(start_));
     pace.add(agreed.elapsed - elapsed_);
     elapsed_ = agreed.elapsed;
     more = !agreed.stop && schedule_.anotherRound(rounds_, elapsed_, pace.typical());
-    if (session_.isRoot() && !agreed.stop && elapsed_ - lastPrint >= 1.0) {
+    if (job_.isRoot() && !agreed.stop && elapsed_ - lastPrint >= 1.0) {
       lastPrint = elapsed_;
       printed = true;
       const double rate = double(schedule_.mutationsAfter(rounds_)) / elapsed_;
@@ -209,7 +209,7 @@ void ChainRender::loop(const SnapshotWriter& snapshot) {
     }
     if (checkpointNow(plan_, elapsed_, lastCheckpoint, more, agreed.save)) writeCheckpoint(elapsed_);
   }
-  if (session_.isRoot() && tty && printed) std::fprintf(stderr, "\n");
+  if (job_.isRoot() && tty && printed) std::fprintf(stderr, "\n");
 }
 
 PssmltOutcome ChainRender::outcome() {
@@ -225,21 +225,21 @@ PssmltOutcome ChainRender::outcome() {
 
 }  // namespace
 
-ChainCounters sumOverRanks(const ChainCounters& c) {
+ChainCounters sumOverRanks(Job& job, const ChainCounters& c) {
   ChainCounters s = c;
   uint64_t* const counts[] = {&s.smallProposed, &s.smallAccepted, &s.largeProposed, &s.largeAccepted,
                               &s.invalidProposals};
   std::vector<double> v = {s.largeTargetSum};
   for (uint64_t* n : counts) v.push_back(double(*n));
-  allreduceSum(v);  // one collective (mmlt sums one per path length); counts stay far below 2^53
+  job.allreduceSum(v);  // one collective (mmlt sums one per path length); counts stay far below 2^53
   s.largeTargetSum = v[0];
   for (size_t k = 0; k < std::size(counts); ++k) *counts[k] = uint64_t(v[k + 1]);
   return s;
 }
 
-PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
+PssmltOutcome runPssmlt(Job& job, Renderer& renderer, const RenderSettings& settings, Film& film,
                         const SnapshotWriter& snapshot, const CheckpointPlan& plan, const Resumed* resumed) {
-  ChainRender render(session, renderer, settings, film, plan, resumed);
+  ChainRender render(job, renderer, settings, film, plan, resumed);
   render.loop(snapshot);
   return render.outcome();
 }

@@ -3,7 +3,7 @@
 #include <functional>
 
 #include "checkpoint_io.h"
-#include "comm.h"
+#include "parallel/job.h"
 #include "film/film.h"
 #include "mcmc/mmlt.h"
 #include "mcmc/pssmlt.h"
@@ -21,7 +21,7 @@ struct PssmltOutcome {
 };
 
 // Chain counters summed over all ranks (collective).
-ChainCounters sumOverRanks(const ChainCounters& c);
+ChainCounters sumOverRanks(Job& job, const ChainCounters& c);
 
 // Root only: writes the image so far, given reduced film sums and the divisor for resolve().
 using SnapshotWriter = std::function<void(const std::vector<double>& sums, double divisor)>;
@@ -30,7 +30,7 @@ using SnapshotWriter = std::function<void(const std::vector<double>& sums, doubl
 // --time stops at a round boundary all ranks agree on; --snapshot-every calls `snapshot`;
 // `plan` writes checkpoints; a render resumed from `resumed` (or null) continues it without
 // running the bootstrap again (its targets are in the checkpoint).
-PssmltOutcome runPssmlt(const Session& session, Renderer& renderer, const RenderSettings& settings, Film& film,
+PssmltOutcome runPssmlt(Job& job, Renderer& renderer, const RenderSettings& settings, Film& film,
                         const SnapshotWriter& snapshot, const CheckpointPlan& plan = {},
                         const Resumed* resumed = nullptr);
 

@@ -12,11 +12,11 @@
 #include "checkpoint/checkpoint.h"
 #include "core/error.h"
 #include "interrupt.h"
-#include "parallel/workers.h"
 #include "mcmc/round_schedule.h"
-#include "request_channel.h"
-#include "replica/round_loop.h"
+#include "parallel/workers.h"
 #include "replica/replica_schedule.h"
+#include "replica/round_loop.h"
+#include "request_channel.h"
 #include "schedule/schedule.h"
 
 namespace relt::mpi {
@@ -35,22 +35,22 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // The sum of every level's film, reduced onto the root.
-std::vector<double> reducedSum(const std::vector<Film>& films) {
+std::vector<double> reducedSum(Job& job, const std::vector<Film>& films) {
   std::vector<double> sums = films[0].data();
   for (size_t k = 1; k < films.size(); ++k)
     for (size_t i = 0; i < sums.size(); ++i) sums[i] += films[k].data()[i];
-  reduceSumToRoot(sums);
+  job.reduceSumToRoot(sums);
   return sums;
 }
 
 // Exchange counts of every rank's ladders (with local decisions each rank counts only its own).
-ExchangeTally sumOverRanks(const ExchangeTally& mine) {
+ExchangeTally sumOverRanks(Job& job, const ExchangeTally& mine) {
   std::vector<double> v;
   for (uint64_t x : mine.proposed) v.push_back(double(x));
   for (uint64_t x : mine.accepted) v.push_back(double(x));
   for (uint64_t x : mine.changed) v.push_back(double(x));
   v.push_back(double(mine.rounds));
-  allreduceSum(v);  // exact: counts stay far below 2^53
+  job.allreduceSum(v);  // exact: counts stay far below 2^53
   ExchangeTally out(mine.levels);
   size_t k = 0;
   for (uint64_t& x : out.proposed) x = uint64_t(v[k++]);
@@ -64,13 +64,13 @@ ExchangeTally sumOverRanks(const ExchangeTally& mine) {
 // states point to point; with local decisions, stop and save requests on a channel of their own.
 class MpiTransport final : public RoundTransport {
  public:
-  MpiTransport(int rank, bool localDecisions) : rank_(rank) {
+  MpiTransport(Job& job, bool localDecisions) : job_(job) {
     if (localDecisions) channel_.emplace();
     if (channel_) idle_ = [this] { channel_->poll(); };
   }
   void post(int group, std::vector<double> mine, const std::vector<size_t>& lengths) override {
     if (pending_.size() <= size_t(group)) pending_.resize(size_t(group) + 1);
-    pending_[size_t(group)].push_back(std::make_unique<PendingAllgatherv>(std::move(mine), lengths));
+    pending_[size_t(group)].push_back(job_.startAllgatherv(std::move(mine), lengths));
   }
   std::vector<std::vector<double>> wait(int group) override {
     std::vector<std::vector<double>> out = pending_[size_t(group)].front()->wait(idle_);
@@ -81,13 +81,13 @@ class MpiTransport final : public RoundTransport {
     std::vector<Payload> sends;
     std::vector<int> from, chains;
     for (const ChainMove& m : pool.plannedMoves()) {
-      if (m.from == rank_) sends.push_back({m.to, pool.exportChain(m.chain)});
-      if (m.to == rank_) {
+      if (m.from == job_.rank()) sends.push_back({m.to, pool.exportChain(m.chain)});
+      if (m.to == job_.rank()) {
         from.push_back(m.from);
         chains.push_back(m.chain);
       }
     }
-    const std::vector<std::vector<uint64_t>> states = transfer(sends, from, idle_);
+    const std::vector<std::vector<uint64_t>> states = job_.transfer(sends, from, idle_);
     for (size_t i = 0; i < states.size(); ++i) pool.importChain(chains[i], states[i]);
     pool.commitMoves();
   }
@@ -115,8 +115,8 @@ class MpiTransport final : public RoundTransport {
   }
 
  private:
-  int rank_;
-  std::vector<std::deque<std::unique_ptr<PendingAllgatherv>>> pending_;  // per group, oldest first
+  Job& job_;
+  std::vector<std::deque<std::unique_ptr<PendingGather>>> pending_;  // per group, oldest first
   std::optional<RequestChannel> channel_;
   std::function<void()> idle_;  // empty without a channel: plain blocking waits
 };
@@ -138,12 +138,12 @@ RoundLoopStart restoreFrom(const Resumed& checkpoint, ReplicaPool& pool, std::ve
 }
 
 // What the render reports (collective): the loop's counts, every rank's timings and counters.
-ReltOutcome outcomeOf(const Session& session, const ReplicaPool& pool, const ReplicaSchedule& schedule,
+ReltOutcome outcomeOf(Job& job, const ReplicaPool& pool, const ReplicaSchedule& schedule,
                       const RoundLoopResult& loop, double area, double elapsed, double roundCollective) {
   const uint64_t rounds = loop.rounds;
-  const std::vector<double> stepMean = allgather(loop.stepMean), stepDeviation = allgather(loop.stepDeviation);
-  const std::vector<double> finishMean = allgather(loop.finishMean);
-  const std::vector<std::vector<double>> stepTrace = gatherToRoot(loop.stepTrace);
+  const std::vector<double> stepMean = job.allgather(loop.stepMean), stepDeviation = job.allgather(loop.stepDeviation);
+  const std::vector<double> finishMean = job.allgather(loop.finishMean);
+  const std::vector<std::vector<double>> stepTrace = job.gatherToRoot(loop.stepTrace);
   ReltOutcome out;
   out.rounds = rounds;
   out.stepsPerChain = schedule.stepsAfter(rounds);
@@ -152,26 +152,26 @@ ReltOutcome outcomeOf(const Session& session, const ReplicaPool& pool, const Rep
   for (int k = 0; k < pool.levels(); ++k) out.levelNames.push_back(pool.family().name(k));
   out.normalisers = pool.normalisers();
   out.placement = pool.placement();
-  out.tally = pool.localDecisions() ? sumOverRanks(pool.tally()) : pool.tally();
-  out.roundTrips = pool.localDecisions() ? allreduceSum(pool.roundTrips().total()) : pool.roundTrips().total();
+  out.tally = pool.localDecisions() ? sumOverRanks(job, pool.tally()) : pool.tally();
+  out.roundTrips = pool.localDecisions() ? job.allreduceSum(pool.roundTrips().total()) : pool.roundTrips().total();
   out.chainMoves = pool.chainMoves();
   out.stepMean = stepMean;
   out.stepDeviation = stepDeviation;
   out.finishMean = finishMean;
   out.stepTrace = stepTrace;
-  for (int r = 0; r < session.size(); ++r) out.chainsPerRank.push_back(pool.hostedCount(r));
+  for (int r = 0; r < job.size(); ++r) out.chainsPerRank.push_back(pool.hostedCount(r));
   out.bootstrapSamples = uint64_t(pool.settings().bootstrap);
   out.resolveDivisor = replicaResolveDivisor(out.stepsPerChain, out.ladders, area);
   out.loopSeconds = elapsed;
-  out.roundCollectiveSeconds = allgather(roundCollective);
+  out.roundCollectiveSeconds = job.allgather(roundCollective);
   uint64_t nonFinite = 0;
   for (const LevelCounters& c : pool.hostedCounters()) nonFinite += c.nonFinite;
-  out.nonFinitePerRank = allgather(double(nonFinite));
+  out.nonFinitePerRank = job.allgather(double(nonFinite));
   for (const LevelCounters& c : pool.hostedCounters()) {
     LevelCounters s;
-    static_cast<ChainCounters&>(s) = relt::mpi::sumOverRanks(static_cast<const ChainCounters&>(c));
-    s.nonFinite = allreduceSum(c.nonFinite);
-    s.seconds = allreduceSum(c.seconds);
+    static_cast<ChainCounters&>(s) = relt::mpi::sumOverRanks(job, static_cast<const ChainCounters&>(c));
+    s.nonFinite = job.allreduceSum(c.nonFinite);
+    s.seconds = job.allreduceSum(c.seconds);
     out.perLevel.push_back(s);
   }
   return out;
@@ -180,22 +180,22 @@ ReltOutcome outcomeOf(const Session& session, const ReplicaPool& pool, const Rep
 // Bootstrap: sample i on rank i mod P (and there on one of its workers); every rank then holds
 // every sample's features. A resumed render takes what it needs of it from the checkpoint instead.
 void bootstrapPool(std::optional<ReplicaPool>& pool, PerWorker<PssEvaluator>& eval, const ReplicaSettings& rs,
-                   uint64_t seed, const Session& session, const Resumed* checkpoint) {
+                   uint64_t seed, Job& job, const Resumed* checkpoint) {
   if (checkpoint) {
-    pool.emplace(eval, rs, seed, checkpointMeanTarget(*checkpoint), session.rank(), session.size());
+    pool.emplace(eval, rs, seed, checkpointMeanTarget(*checkpoint), job.rank(), job.size());
     return;
   }
   std::vector<double> features =
-      sumOfWorkerShares(eval.size(), session.rank(), session.size(), [&](int w, int first, int stride) {
+      sumOfWorkerShares(eval.size(), job.rank(), job.size(), [&](int w, int first, int stride) {
         return bootstrapFeatures(eval[w], rs.family, seed, rs.bootstrap, first, stride);
       });
-  allreduceSum(features);
-  pool.emplace(eval, rs, seed, features, session.rank(), session.size());
+  job.allreduceSum(features);
+  pool.emplace(eval, rs, seed, features, job.rank(), job.size());
 }
 
 }  // namespace
 
-ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSettings& settings,
+ReltOutcome runRelt(Job& job, Renderer& renderer, const RenderSettings& settings,
                     std::vector<Film>& films, const SnapshotWriter& snapshot, const CheckpointPlan& plan,
                     const Resumed* checkpoint) {
   const ReplicaSettings rs = effectiveReplicaSettings(settings);
@@ -203,9 +203,9 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
 
   const auto bootstrapStart = Clock::now();
   std::optional<ReplicaPool> pooled;
-  bootstrapPool(pooled, eval, rs, settings.seed, session, checkpoint);
+  bootstrapPool(pooled, eval, rs, settings.seed, job, checkpoint);
   ReplicaPool& pool = *pooled;
-  const double bootstrapSeconds = allreduceMax(since(bootstrapStart));
+  const double bootstrapSeconds = job.allreduceMax(since(bootstrapStart));
   films.assign(rs.perLevel ? size_t(pool.levels()) : 1, Film(settings.width, settings.height));
 
   const double area = double(settings.width) * settings.height;
@@ -214,40 +214,40 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   RoundLoopStart resumed;
   // A bootstrap sample costs about what a mutation does: the agreed first guess of a round's
   // duration, until the lagged elapsed times of two rounds have come back.
-  const double perSample = bootstrapSeconds / std::max(1.0, double(rs.bootstrap) / session.size());
+  const double perSample = bootstrapSeconds / std::max(1.0, double(rs.bootstrap) / job.size());
   if (checkpoint)
     resumed = restoreFrom(*checkpoint, pool, films, schedule);
   else
-    resumed.secondsPerRound = perSample * rs.exchangeInterval * double(pool.chainCount()) / session.size();
+    resumed.secondsPerRound = perSample * rs.exchangeInterval * double(pool.chainCount()) / job.size();
   // A time budget counts the bootstrap too.
-  resumed.elapsed += allreduceMax(since(bootstrapStart));
-  const double collectiveBefore = collectiveSeconds();
+  resumed.elapsed += job.allreduceMax(since(bootstrapStart));
+  const double collectiveBefore = job.collectiveSeconds();
   const auto start = Clock::now();
   double lastSnapshot = resumed.elapsed, lastPrint = resumed.elapsed, lastCheckpoint = resumed.elapsed;
   const bool tty = ::isatty(STDERR_FILENO);
-  MpiTransport transport(session.rank(), pool.localDecisions());
+  MpiTransport transport(job, pool.localDecisions());
   auto writeSnapshot = [&](uint64_t rounds, double elapsed) {
     transport.meet();
     pool.gatherWorkerFilms(films);
     lastSnapshot = elapsed;
-    const std::vector<double> sums = reducedSum(films);
-    if (session.isRoot()) snapshot(sums, replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
+    const std::vector<double> sums = reducedSum(job, films);
+    if (job.isRoot()) snapshot(sums, replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
   };
   auto writeCheckpoint = [&](uint64_t rounds, double elapsed) {
     transport.meet();
     pool.gatherWorkerFilms(films);
     const nlohmann::json progress = {
         {"rounds", rounds}, {"elapsed", elapsed}, {"steps_per_chain", schedule.stepsAfter(rounds)}};
-    saveCheckpoint(plan, "relt", progress, films, pool.checkpointPart());
+    saveCheckpoint(job, plan, "relt", progress, films, pool.checkpointPart());
   };
   RoundLoopHooks hooks;
   hooks.elapsed = [&] { return resumed.elapsed + since(start); };
-  hooks.stop = [] { return stopSignalled(); };
-  hooks.save = [] { return takeSaveRequest(); };
+  hooks.stop = [&job] { return job.stopRequested(); };
+  hooks.save = [&job] { return job.takeSaveRequest(); };
   // The scaling model replays the stepping times (--trace); at most about 2^20 numbers in all.
-  if (!settings.trace.empty()) hooks.traceLimit = std::max<size_t>(1024, (size_t(1) << 20) / size_t(session.size()));
+  if (!settings.trace.empty()) hooks.traceLimit = std::max<size_t>(1024, (size_t(1) << 20) / size_t(job.size()));
   hooks.roundDone = [&](uint64_t rounds, double elapsed, bool more) {
-    if (session.isRoot() && elapsed - lastPrint >= 1.0) {
+    if (job.isRoot() && elapsed - lastPrint >= 1.0) {
       lastPrint = elapsed;
       const double rate = double(schedule.stepsAfter(rounds)) * pool.chainCount() / std::max(elapsed, 1e-9);
       std::fprintf(stderr, tty ? "\r%s" : "%s\n",
@@ -267,11 +267,11 @@ ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSett
   const RoundLoopResult loop = runRoundLoop(pool, schedule, transport, films, hooks, resumed);
   pool.gatherWorkerFilms(films);
   if (loop.stopped) markStopAgreed();
-  const double roundCollective = collectiveSeconds() - collectiveBefore;
+  const double roundCollective = job.collectiveSeconds() - collectiveBefore;
   // The loop's agreed time is that of the messages read back (normaliser lag): the real end here.
-  const double elapsed = allreduceMax(resumed.elapsed + since(start));
-  if (session.isRoot() && tty && lastPrint > 0.0) std::fprintf(stderr, "\n");
-  return outcomeOf(session, pool, schedule, loop, area, elapsed, roundCollective);
+  const double elapsed = job.allreduceMax(resumed.elapsed + since(start));
+  if (job.isRoot() && tty && lastPrint > 0.0) std::fprintf(stderr, "\n");
+  return outcomeOf(job, pool, schedule, loop, area, elapsed, roundCollective);
 }
 
 }  // namespace relt::mpi

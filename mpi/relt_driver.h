@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "checkpoint_io.h"
-#include "comm.h"
+#include "parallel/job.h"
 #include "film/film.h"
 #include "pssmlt_driver.h"
 #include "render/renderer.h"
@@ -38,7 +38,7 @@ struct ReltOutcome {
 // Renders every chain this rank hosts into `films`, which it sizes: one film, or one per level
 // with --per-level (their sum is the image); not yet reduced. Continues `resumed` if given and
 // writes checkpoints as the plan says. Collective.
-ReltOutcome runRelt(const Session& session, Renderer& renderer, const RenderSettings& settings,
+ReltOutcome runRelt(Job& job, Renderer& renderer, const RenderSettings& settings,
                     std::vector<Film>& films, const SnapshotWriter& snapshot, const CheckpointPlan& plan,
                     const Resumed* resumed);
 

@@ -33,9 +33,9 @@ using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Fails before any work if an output cannot be created (checked on the root, shared with all).
-void checkOutputsWritable(const Session& session, const RenderSettings& s) {
+void checkOutputsWritable(Job& job, const RenderSettings& s) {
   std::string problem;
-  if (session.isRoot()) {
+  if (job.isRoot()) {
     for (const std::string& path : {s.output, s.png, s.stats, s.trace}) {
       if (path.empty()) continue;
       const std::filesystem::path dir = std::filesystem::path(path).parent_path();
@@ -50,14 +50,14 @@ void checkOutputsWritable(const Session& session, const RenderSettings& s) {
       }
     }
   }
-  shareRootProblem(problem);
+  job.shareRootProblem(problem);
 }
 
 // The checkpoint folder is made if missing and must be writable; the one to resume from must
 // hold a checkpoint (read and checked later). Before any work, on the root, shared with all.
-void checkCheckpointFolders(const Session& session, const CheckpointPlan& plan) {
+void checkCheckpointFolders(Job& job, const CheckpointPlan& plan) {
   std::string problem;
-  if (session.isRoot()) {
+  if (job.isRoot()) {
     std::error_code error;
     if (!plan.dir.empty()) {
       std::filesystem::create_directories(plan.dir, error);
@@ -69,7 +69,7 @@ void checkCheckpointFolders(const Session& session, const CheckpointPlan& plan) 
     if (problem.empty() && !plan.resume.empty() && !std::filesystem::exists(checkpointFile(plan.resume)))
       problem = plan.resume + ": no checkpoint to resume (" + checkpointFile(plan.resume) + " does not exist)";
   }
-  shareRootProblem(problem);
+  job.shareRootProblem(problem);
 }
 
 // Pixels zeroed by writeImages over the render (snapshots and the final image).
@@ -91,7 +91,7 @@ ImageAttributes renderAttributes(const RenderSettings& settings, const nlohmann:
 // before mpirun's SIGTERM) and the image of a render stopped by a signal (SIGKILL follows a second
 // later); ZIP would take most of that second on a 1024x768 film.
 ExrCompression exrCompressionOf(const nlohmann::json& stats) {
-  return stats.is_null() || stopAgreed() ? ExrCompression::None : ExrCompression::Zip;
+  return stats.is_null() || stats.value("interrupted", false) ? ExrCompression::None : ExrCompression::Zip;
 }
 
 // The image as -o names it (EXR with optional extra layers and metadata, or PNG) and the optional
@@ -143,12 +143,11 @@ std::string inPassNote(PassPoint end, PassPoint shown) {
 // The images and the stats (with the wall time added). Root only.
 void writeOutputs(const RenderSettings& settings, const Image& image, nlohmann::json stats, Clock::time_point wallStart,
                   const std::vector<ImageLayer>& layers = {}) {
-  stats["interrupted"] = stopAgreed();
   stats["image_mean"] = writeImages(settings, image, layers, stats).mean();  // of the image as written
   stats["nonfinite_pixels_zeroed"] = nonFinitePixelsZeroed;
   if (checkpointTally().written > 0)
     stats["checkpoints"] = {{"written", checkpointTally().written}, {"seconds", checkpointTally().seconds}};
-  if (stopAgreed())
+  if (stats.value("interrupted", false))
     std::fprintf(stderr, "relt: stopped early by a signal (SIGINT/SIGTERM/SIGUSR1): the image holds the work done so far\n");
   if (!settings.stats.empty()) {
     stats["wall_seconds"] = since(wallStart);
@@ -186,16 +185,16 @@ Image withDirect(Image image, const Image& direct) {
   return image;
 }
 
-Gathered gatherAfterRender(Clock::time_point renderStart, const Renderer& renderer, Film& film, bool reduceFilm = true) {
+Gathered gatherAfterRender(Job& job, Clock::time_point renderStart, const Renderer& renderer, Film& film, bool reduceFilm = true) {
   Gathered g;
-  g.renderSeconds = allreduceMax(since(renderStart));
-  if (reduceFilm) reduceSumToRoot(film.data());
-  g.rays = allreduceSum(renderer.rays());
-  g.dropped = allreduceSum(film.droppedSamples());
-  g.droppedPerRank = allgather(double(film.droppedSamples()));
-  g.collective = allgather(collectiveSeconds());
-  g.hosts = processorNames();
-  g.peakResident = allgather(double(peakResidentBytes()));
+  g.renderSeconds = job.allreduceMax(since(renderStart));
+  if (reduceFilm) job.reduceSumToRoot(film.data());
+  g.rays = job.allreduceSum(renderer.rays());
+  g.dropped = job.allreduceSum(film.droppedSamples());
+  g.droppedPerRank = job.allgather(double(film.droppedSamples()));
+  g.collective = job.allgather(job.collectiveSeconds());
+  g.hosts = job.processorNames();
+  g.peakResident = job.allgather(double(peakResidentBytes()));
   return g;
 }
 
@@ -203,11 +202,12 @@ Gathered gatherAfterRender(Clock::time_point renderStart, const Renderer& render
 std::vector<uint64_t> counts(const std::vector<double>& v) { return std::vector<uint64_t>(v.begin(), v.end()); }
 
 // The stats every integrator writes.
-nlohmann::json commonStats(const RenderSettings& settings, const Session& session, const Gathered& g,
+nlohmann::json commonStats(const RenderSettings& settings, Job& job, const Gathered& g,
                            const Image& image) {
   nlohmann::json j;
   j["settings"] = settings.toJson();
-  j["ranks"] = session.size();
+  j["ranks"] = job.size();
+  j["interrupted"] = job.stopAgreed();
   j["hosts"] = g.hosts;
   j["rays"] = g.rays;
   j["render_seconds"] = g.renderSeconds;
@@ -272,13 +272,13 @@ nlohmann::json reltStats(const mpi::ReltOutcome& o) {
   return j;
 }
 
-void renderRelt(const Session& session, Renderer& renderer, const RenderSettings& settings, Clock::time_point wallStart,
+void renderRelt(Job& job, Renderer& renderer, const RenderSettings& settings, Clock::time_point wallStart,
                 Clock::time_point renderStart, const DirectEstimate& direct, const CheckpointPlan& plan,
                 const Resumed* resumed) {
   const bool layers = settings.replica.perLevel;
   std::vector<Film> films;
   int snapshots = 0;
-  const mpi::ReltOutcome o = mpi::runRelt(session, renderer, chainSettings(settings, direct), films,
+  const mpi::ReltOutcome o = mpi::runRelt(job, renderer, chainSettings(settings, direct), films,
                                           [&](const std::vector<double>& sums, double d) {
     writeImages(settings, withDirect(Renderer::resolve(films[0], sums, d), direct.image));
     ++snapshots;
@@ -288,12 +288,12 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
   if (layers)
     for (Film& f : films) {
       layerSums.push_back(f.data());
-      reduceSumToRoot(layerSums.back());
+      job.reduceSumToRoot(layerSums.back());
     }
   for (size_t k = 1; k < films.size(); ++k)
     for (size_t i = 0; i < films[0].data().size(); ++i) films[0].data()[i] += films[k].data()[i];
-  const Gathered g = gatherAfterRender(renderStart, renderer, films[0]);
-  if (!session.isRoot()) return;
+  const Gathered g = gatherAfterRender(job, renderStart, renderer, films[0]);
+  if (!job.isRoot()) return;
   const Image image = withDirect(Renderer::resolve(films[0], films[0].data(), o.resolveDivisor), direct.image);
   std::vector<ImageLayer> out;
   for (size_t k = 0; k < layerSums.size(); ++k)
@@ -305,13 +305,13 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
     invalid += c.invalidProposals;
     nonFinite += c.nonFinite;
   }
-  nlohmann::json j = commonStats(settings, session, g, image);
+  nlohmann::json j = commonStats(settings, job, g, image);
   j["nan_inf_samples_dropped"] = nonFinite + direct.dropped;
   addDirectStats(j, settings, direct);
   j["nan_inf_samples_dropped_per_rank"] = counts(o.nonFinitePerRank);
   const uint64_t earlier =
       resumed ? resumed->progress.at("steps_per_chain").get<uint64_t>() * uint64_t(o.ladders * o.levels) : 0;
-  addMutationRates(j, mutations, g, session.size(), earlier);
+  addMutationRates(j, mutations, g, job.size(), earlier);
   j["snapshots"] = snapshots;
   j["invalid_proposals"] = invalid;
   j["relt"] = reltStats(o);
@@ -326,26 +326,26 @@ void renderRelt(const Session& session, Renderer& renderer, const RenderSettings
 }
 
 // pssmlt and mmlt: the chains' image (plus the direct emission apart), their counters in stats.json.
-void renderChains(const Session& session, Renderer& renderer, const RenderSettings& settings, Clock::time_point wallStart,
+void renderChains(Job& job, Renderer& renderer, const RenderSettings& settings, Clock::time_point wallStart,
                   Clock::time_point renderStart, const DirectEstimate& direct, const CheckpointPlan& plan,
                   const Resumed* resumed) {
   Film film(settings.width, settings.height);
   int snapshots = 0;
-  const PssmltOutcome o = runPssmlt(session, renderer, chainSettings(settings, direct), film,
+  const PssmltOutcome o = runPssmlt(job, renderer, chainSettings(settings, direct), film,
                                     [&](const std::vector<double>& sums, double d) {
     writeImages(settings, withDirect(Renderer::resolve(film, sums, d), direct.image));
     ++snapshots;
   }, plan, resumed);
-  const Gathered g = gatherAfterRender(renderStart, renderer, film);
-  if (!session.isRoot()) return;
+  const Gathered g = gatherAfterRender(job, renderStart, renderer, film);
+  if (!job.isRoot()) return;
   const double area = double(settings.width) * settings.height;
   const Image image =
       withDirect(Renderer::resolve(film, film.data(), pssmltResolveDivisor(o.totalMutations, o.normaliser, area)), direct.image);
   const uint64_t mutations = o.counters.smallProposed + o.counters.largeProposed;
-  nlohmann::json j = commonStats(settings, session, g, image);
+  nlohmann::json j = commonStats(settings, job, g, image);
   j["nan_inf_samples_dropped"] = g.dropped + direct.dropped;
   addDirectStats(j, settings, direct);
-  addMutationRates(j, mutations, g, session.size(), resumed ? resumed->progress.at("mutations").get<uint64_t>() : 0);
+  addMutationRates(j, mutations, g, job.size(), resumed ? resumed->progress.at("mutations").get<uint64_t>() : 0);
   j["rounds"] = o.rounds;
   j["snapshots"] = snapshots;
   j["bootstrap_samples"] = o.bootstrapSamples;
@@ -373,13 +373,13 @@ void renderChains(const Session& session, Renderer& renderer, const RenderSettin
 
 // pssmlt and relt stopped during the direct-emission pass: the image of the pass so far (the chains
 // have not started; its checkpoint is written), and the stats.
-void finishInThePass(const Session& session, const Renderer& renderer, const RenderSettings& settings,
+void finishInThePass(Job& job, const Renderer& renderer, const RenderSettings& settings,
                      Clock::time_point wallStart, Clock::time_point renderStart, const DirectEstimate& direct) {
   Film none(settings.width, settings.height);
-  const Gathered g = gatherAfterRender(renderStart, renderer, none);
-  if (!session.isRoot()) return;
+  const Gathered g = gatherAfterRender(job, renderStart, renderer, none);
+  if (!job.isRoot()) return;
   const Image image = direct.spp > 0 ? direct.image : Renderer::resolve(none, none.data(), 1.0);
-  nlohmann::json j = commonStats(settings, session, g, image);
+  nlohmann::json j = commonStats(settings, job, g, image);
   j["nan_inf_samples_dropped"] = direct.dropped;
   addDirectStats(j, settings, direct);
   writeOutputs(settings, image, j, wallStart);
@@ -388,20 +388,20 @@ void finishInThePass(const Session& session, const Renderer& renderer, const Ren
 }
 
 // erpt: its image (with the proposal filter, if asked) and counters in stats.json.
-void renderErpt(const Session& session, Renderer& renderer, const RenderSettings& settings, Clock::time_point wallStart,
+void renderErpt(Job& job, Renderer& renderer, const RenderSettings& settings, Clock::time_point wallStart,
                 const CheckpointPlan& plan, const Resumed* resumed) {
   PassFilm film = erptFilm(settings);
   const auto renderStart = Clock::now();
   int snapshots = 0;
-  const ErptOutcome o = runErpt(session, renderer, settings, film, [&](const Image& image) {
+  const ErptOutcome o = runErpt(job, renderer, settings, film, [&](const Image& image) {
     writeImages(settings, image);
     ++snapshots;
   }, plan, resumed);
-  const Gathered g = gatherAfterRender(renderStart, renderer, film.live(), false);
-  if (!session.isRoot()) return;
+  const Gathered g = gatherAfterRender(job, renderStart, renderer, film.live(), false);
+  if (!job.isRoot()) return;
   const Image& image = o.image;
-  nlohmann::json j = commonStats(settings, session, g, image);
-  addMutationRates(j, o.counters.mutations, g, session.size(),
+  nlohmann::json j = commonStats(settings, job, g, image);
+  addMutationRates(j, o.counters.mutations, g, job.size(),
                    resumed ? resumed->progress.at("mutations").get<uint64_t>() : 0);
   addPassStats(j, o.end, film.shown(o.end));
   j["snapshots"] = snapshots;
@@ -420,7 +420,7 @@ void renderErpt(const Session& session, Renderer& renderer, const RenderSettings
 
 // pt and bdpt: a checkpoint is the film and where the passes got to (pass k's samples depend on k
 // only), and inside a pass for bdpt also the film of the whole passes (render/pass_film.h).
-void renderPasses(const Session& session, Renderer& renderer, const RenderSettings& settings,
+void renderPasses(Job& job, Renderer& renderer, const RenderSettings& settings,
                   Clock::time_point wallStart, const CheckpointPlan& plan, const Resumed* resumed) {
   PassFilm film(settings.width, settings.height, samplesStayInTheirRow(settings.integrator), 0, settings.threads);
   PassStart start;
@@ -435,31 +435,31 @@ void renderPasses(const Session& session, Renderer& renderer, const RenderSettin
   int snapshots = 0;
   PassHooks hooks;
   hooks.renderUnit = [&](uint64_t pass, int row) { renderer.renderRow(pass, row, film.workerFilm(currentWorker())); };
-  hooks.rate = [&](double elapsed) { return double(renderer.samples()) * session.size() / std::max(elapsed, 1e-9); };
+  hooks.rate = [&](double elapsed) { return double(renderer.samples()) * job.size() / std::max(elapsed, 1e-9); };
   hooks.snapshot = [&](PassPoint at) {
-    const Image image = reducedPassImage(session, film, at);
-    if (session.isRoot()) writeImages(settings, image);
+    const Image image = reducedPassImage(job, film, at);
+    if (job.isRoot()) writeImages(settings, image);
     ++snapshots;
   };
   hooks.chunkDone = [&, lastCheckpoint = start.elapsed](PassPoint at, double elapsed, bool more, bool save) mutable {
     if (!checkpointNow(plan, elapsed, lastCheckpoint, more, save)) return;
     film.gatherWorkers();
     nlohmann::json progress = passProgress(at, elapsed);
-    progress["samples"] = earlierSamples + allreduceSum(renderer.samples());
-    saveCheckpoint(plan, integratorName(settings.integrator), progress, film.checkpointFilms(at), {});
+    progress["samples"] = earlierSamples + job.allreduceSum(renderer.samples());
+    saveCheckpoint(job, plan, integratorName(settings.integrator), progress, film.checkpointFilms(at), {});
   };
-  const PassPoint end = runPasses(session, settings, film, hooks, start);
-  const uint64_t samplesNow = allreduceSum(renderer.samples()), samples = earlierSamples + samplesNow;
-  const Image image = reducedPassImage(session, film, end);
-  const Gathered g = gatherAfterRender(renderStart, renderer, film.live(), false);
-  if (!session.isRoot()) return;
+  const PassPoint end = runPasses(job, settings, film, hooks, start);
+  const uint64_t samplesNow = job.allreduceSum(renderer.samples()), samples = earlierSamples + samplesNow;
+  const Image image = reducedPassImage(job, film, end);
+  const Gathered g = gatherAfterRender(job, renderStart, renderer, film.live(), false);
+  if (!job.isRoot()) return;
 
-  nlohmann::json j = commonStats(settings, session, g, image);
+  nlohmann::json j = commonStats(settings, job, g, image);
   addPassStats(j, end, film.shown(end));
   j["snapshots"] = snapshots;
   j["samples"] = samples;
   j["samples_per_second"] = samplesNow / std::max(g.renderSeconds, 1e-9);
-  j["samples_per_second_per_rank"] = samplesNow / std::max(g.renderSeconds, 1e-9) / session.size();
+  j["samples_per_second_per_rank"] = samplesNow / std::max(g.renderSeconds, 1e-9) / job.size();
   if (resumed) j["resumed_from"] = {{"checkpoint", resumed->file}, {"progress", resumed->progress}};
   writeOutputs(settings, image, j, wallStart);
   std::fprintf(stderr, "relt: %d spp%s, %.2f s, %.3f M samples/s, %.2f M rays/s; wrote %s\n", end.passes,
@@ -470,29 +470,29 @@ void renderPasses(const Session& session, Renderer& renderer, const RenderSettin
 
 }  // namespace
 
-void runRender(const Session& session, RenderSettings settings, CheckpointPlan plan) {
+void runRender(Job& job, RenderSettings settings, CheckpointPlan plan) {
   const auto wallStart = Clock::now();
   Renderer renderer(loadGltf(settings.scenePath), settings);
   settings = renderer.settings();
-  if (session.isRoot())
+  if (job.isRoot())
     for (const std::string& w : renderer.scene().warnings) std::fprintf(stderr, "relt: warning: %s\n", w.c_str());
-  checkOutputsWritable(session, settings);
-  checkCheckpointFolders(session, plan);
+  checkOutputsWritable(job, settings);
+  checkCheckpointFolders(job, plan);
   // Only the root reads and writes checkpoints; the digest reads the scene file again.
-  if (session.isRoot() && (!plan.dir.empty() || !plan.resume.empty())) {
+  if (job.isRoot() && (!plan.dir.empty() || !plan.resume.empty())) {
     plan.identity = imageIdentity(settings, sceneDigest(settings.scenePath, summarizeScene(renderer.scene())));
     plan.settings = settings.toJson();
   }
   std::optional<Resumed> resumed;
-  if (!plan.resume.empty()) resumed = loadCheckpoint(plan, integratorName(settings.integrator));
+  if (!plan.resume.empty()) resumed = loadCheckpoint(job, plan, integratorName(settings.integrator));
 
   if (settings.integrator == Integrator::Relt || isMarkovChain(settings.integrator)) {
     const auto renderStart = Clock::now();
-    const DirectEstimate direct = directEmission(session, renderer, settings, plan, resumed, [&](const Image& image) {
+    const DirectEstimate direct = directEmission(job, renderer, settings, plan, resumed, [&](const Image& image) {
       writeImages(settings, image);
     });
     if (direct.stopped) {
-      finishInThePass(session, renderer, settings, wallStart, renderStart, direct);
+      finishInThePass(job, renderer, settings, wallStart, renderStart, direct);
       return;
     }
     if (directEmissionApart(settings)) {
@@ -501,16 +501,16 @@ void runRender(const Session& session, RenderSettings settings, CheckpointPlan p
     }
     const Resumed* chains = resumed ? &*resumed : nullptr;
     if (settings.integrator == Integrator::Relt)
-      renderRelt(session, renderer, settings, wallStart, renderStart, direct, plan, chains);
+      renderRelt(job, renderer, settings, wallStart, renderStart, direct, plan, chains);
     else
-      renderChains(session, renderer, settings, wallStart, renderStart, direct, plan, chains);
+      renderChains(job, renderer, settings, wallStart, renderStart, direct, plan, chains);
     return;
   }
   if (settings.integrator == Integrator::Erpt) {
-    renderErpt(session, renderer, settings, wallStart, plan, resumed ? &*resumed : nullptr);
+    renderErpt(job, renderer, settings, wallStart, plan, resumed ? &*resumed : nullptr);
     return;
   }
-  renderPasses(session, renderer, settings, wallStart, plan, resumed ? &*resumed : nullptr);
+  renderPasses(job, renderer, settings, wallStart, plan, resumed ? &*resumed : nullptr);
 }
 
 }  // namespace relt::mpi

@@ -1,7 +1,7 @@
 #pragma once
 // A render from loading the scene to writing the outputs, for every integrator.
 #include "checkpoint_io.h"
-#include "comm.h"
+#include "parallel/job.h"
 #include "render/settings.h"
 
 namespace relt::mpi {
@@ -9,6 +9,6 @@ namespace relt::mpi {
 // Loads the scene on every rank, renders (continuing a checkpoint and writing checkpoints as the
 // plan says), reduces the films on the root and writes the outputs. Throws InputError for
 // anything the user can fix.
-void runRender(const Session& session, RenderSettings settings, CheckpointPlan plan = {});
+void runRender(Job& job, RenderSettings settings, CheckpointPlan plan = {});
 
 }  // namespace relt::mpi

@@ -36,4 +36,16 @@ void Film::clear() {
   dropped_ = 0;
 }
 
+void gatherWorkerFilms(std::span<Film> into, std::span<Film> worker) {
+  for (size_t k = 0; k < worker.size(); ++k) {
+    into[k].addWeighted(worker[k], 1.0);
+    worker[k].clear();
+  }
+}
+
+void gatherWorkerTally(std::vector<double>& into, std::vector<double>& worker) {
+  for (size_t i = 0; i < worker.size(); ++i) into[i] += worker[i];
+  std::fill(worker.begin(), worker.end(), 0.0);
+}
+
 }  // namespace relt

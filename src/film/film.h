@@ -1,6 +1,7 @@
 #pragma once
 // Accumulation buffer for splats (double precision, box filter of one pixel).
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/math.h"
@@ -34,5 +35,11 @@ class Film {
   std::vector<double> rgb_;
   uint64_t dropped_ = 0;
 };
+
+// Adds each of a worker's films into the matching one of `into` (the same count and sizes) and
+// clears the worker's: a rank's workers splat apart and are gathered before the sums are read.
+void gatherWorkerFilms(std::span<Film> into, std::span<Film> worker);
+// The same for per-pixel tallies kept beside a film.
+void gatherWorkerTally(std::vector<double>& into, std::vector<double>& worker);
 
 }  // namespace relt

@@ -1,6 +1,7 @@
 #include "mcmc/chain_pool.h"
 
 #include <algorithm>
+#include <span>
 #include <stdexcept>
 
 #include "core/words.h"
@@ -11,8 +12,9 @@ namespace {
 constexpr uint64_t kPartVersion = 1;
 }  // namespace
 
-ChainPool::ChainPool(PerWorker<PssEvaluator>* pss, PerWorker<MmltEvaluator>* mmlt, const std::vector<double>& bootstrapTargets,
-                     uint64_t seed, const PssmltSettings& settings, const std::vector<int>& chains)
+ChainPool::ChainPool(PerWorker<PssEvaluator>* pss, PerWorker<MmltEvaluator>* mmlt,
+                     const std::vector<double>& bootstrapTargets, uint64_t seed, const PssmltSettings& settings,
+                     const std::vector<int>& chains)
     : pss_(pss), mmlt_(mmlt), ids_(chains) {
   const Distribution1D bootstrap(bootstrapTargets);
   if (bootstrap.total() <= 0.0) return;  // nothing visible: no chains, the image stays black
@@ -49,7 +51,8 @@ ChainPool::ChainPool(PerWorker<PssEvaluator>* pss, PerWorker<MmltEvaluator>* mml
       depth = mmltDepthOfBootstrap(index, maxDepth());
     }
     depth_.push_back(depth);
-    chain.start([&](SampleSource& u, PathSample& out) { return (*mmlt_)[0](depth, u, out); }, bootstrapKey(seed, index));
+    const auto eval = [&](SampleSource& u, PathSample& out) { return (*mmlt_)[0](depth, u, out); };
+    chain.start(eval, bootstrapKey(seed, index));
   }
 }
 
@@ -73,11 +76,8 @@ Film& ChainPool::filmOf(int worker, size_t i, Film& film) {
 }
 
 void ChainPool::gatherWorkers(Film& film) {
-  for (std::vector<Film>& own : workerFilms_)
-    for (size_t d = 0; d < own.size(); ++d) {
-      (depthFilms_ ? films_[d] : film).addWeighted(own[d], 1.0);
-      own[d].clear();
-    }
+  const std::span<Film> into = depthFilms_ ? std::span<Film>(films_) : std::span<Film>(&film, 1);
+  for (std::vector<Film>& own : workerFilms_) relt::gatherWorkerFilms(into, own);
 }
 
 void ChainPool::run(const std::vector<uint64_t>& steps, Film& film) {

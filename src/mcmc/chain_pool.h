@@ -15,8 +15,9 @@ class ChainPool {
   // Exactly one kind of evaluator: pssmlt chains (pss) or mmlt chains (mmlt; each at the depth of
   // its starting bootstrap sample). One evaluator per worker thread: run() steps chain i on
   // worker i mod workers.
-  ChainPool(PerWorker<PssEvaluator>* pss, PerWorker<MmltEvaluator>* mmlt, const std::vector<double>& bootstrapTargets, uint64_t seed,
-            const PssmltSettings& settings, const std::vector<int>& chains);
+  ChainPool(PerWorker<PssEvaluator>* pss, PerWorker<MmltEvaluator>* mmlt,
+            const std::vector<double>& bootstrapTargets, uint64_t seed, const PssmltSettings& settings,
+            const std::vector<int>& chains);
 
   // Advances chain i by steps[i] mutations (indices as in the `chains` given to the constructor).
   // Splats go to `film`, except for mmlt with a stratified plan: to one film per depth. Workers

@@ -1,6 +1,7 @@
 #pragma once
 // One object per worker thread of a rank, all made from the same arguments: evaluators, whose
-// scratch must not be shared between threads.
+// scratch must not be shared between threads. Zero workers make none (a kind of evaluator a
+// render does not use).
 #include <deque>
 
 namespace relt {
@@ -10,7 +11,7 @@ class PerWorker {
  public:
   template <class... Args>
   explicit PerWorker(int workers, const Args&... args) {
-    for (int w = 0; w < (workers < 1 ? 1 : workers); ++w) items_.emplace_back(args...);
+    for (int w = 0; w < workers; ++w) items_.emplace_back(args...);
   }
   T& operator[](int worker) { return items_[size_t(worker)]; }
   const T& operator[](int worker) const { return items_[size_t(worker)]; }

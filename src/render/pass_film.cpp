@@ -15,11 +15,8 @@ PassFilm::PassFilm(int width, int height, bool rowsStandAlone, size_t tallySize,
 
 void PassFilm::gatherWorkers() {
   for (size_t w = 0; w < workerFilms_.size(); ++w) {
-    films_[0].addWeighted(workerFilms_[w], 1.0);
-    workerFilms_[w].clear();
-    std::vector<double>& tally = workerTallies_[w];
-    for (size_t i = 0; i < tally.size(); ++i) tallies_[0][i] += tally[i];
-    std::fill(tally.begin(), tally.end(), 0.0);
+    gatherWorkerFilms({&films_[0], 1}, {&workerFilms_[w], 1});
+    gatherWorkerTally(tallies_[0], workerTallies_[w]);
   }
 }
 

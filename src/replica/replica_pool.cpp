@@ -176,11 +176,7 @@ void ReplicaPool::stepChain(size_t i, uint64_t steps, int worker, std::vector<Fi
 }
 
 void ReplicaPool::gatherWorkerFilms(std::vector<Film>& films) {
-  for (std::vector<Film>& own : workerFilms_)
-    for (size_t k = 0; k < own.size(); ++k) {
-      films[k].addWeighted(own[k], 1.0);
-      own[k].clear();
-    }
+  for (std::vector<Film>& own : workerFilms_) relt::gatherWorkerFilms(films, own);
 }
 
 size_t ReplicaPool::messageLength(int group, int rank) const {
