@@ -1,17 +1,12 @@
 #include "checkpoint_io.h"
 
-#include <chrono>
-
 #include "checkpoint/checkpoint.h"
+#include "core/clock.h"
 #include "core/error.h"
 #include "core/words.h"
 
 namespace relt::mpi {
 namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 CheckpointTally g_tally;
 
@@ -19,7 +14,7 @@ CheckpointTally g_tally;
 
 void saveCheckpoint(Job& job, const CheckpointPlan& plan, const char* integrator, const nlohmann::json& progress,
                     std::span<const Film> films, const std::vector<uint64_t>& part) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   std::vector<const std::vector<double>*> sums;
   for (const Film& f : films) sums.push_back(&f.data());
   if (plan.directFilm) sums.push_back(&plan.directFilm->data());

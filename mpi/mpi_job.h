@@ -8,10 +8,10 @@ namespace relt::mpi {
 
 class MpiJob final : public Job {
  public:
-  explicit MpiJob(const Session& session) : rank_(session.rank()), size_(session.size()) {}
+  explicit MpiJob(const Session& session) : session_(session) {}
 
-  int rank() const override { return rank_; }
-  int size() const override { return size_; }
+  int rank() const override { return session_.rank(); }
+  int size() const override { return session_.size(); }
 
   void reduceSumToRoot(std::vector<double>& data) override { mpi::reduceSumToRoot(data); }
   void reduceSumToRoot(const std::vector<double>& send, double* sumsOnRoot) override {
@@ -51,7 +51,7 @@ class MpiJob final : public Job {
   double collectiveSeconds() const override { return mpi::collectiveSeconds(); }
 
  private:
-  int rank_, size_;
+  const Session& session_;
 };
 
 }  // namespace relt::mpi

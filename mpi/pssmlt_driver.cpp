@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "checkpoint/checkpoint.h"
+#include "core/clock.h"
 #include "core/error.h"
 #include "core/words.h"
 #include "mcmc/chain_pool.h"
@@ -20,8 +21,6 @@
 namespace relt::mpi {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 std::vector<int> ownedChains(Job& job, int chains) {
   std::vector<int> mine;
@@ -108,7 +107,7 @@ ChainRender::ChainRender(Job& job, Renderer& renderer, const RenderSettings& set
                 static_cast<uint64_t>(std::llround(ps_.mutationsPerPixel * area_))) {
   for (double t : targets_) bootstrapSum_ += t;
   if (resumed) restore(*resumed);
-  elapsed_ += job.allreduceMax(since(start_));
+  elapsed_ += job.allreduceMax(secondsSince(start_));
 }
 
 // Sample i on rank i mod P (and there on one of its workers); every rank then holds all targets
@@ -181,7 +180,7 @@ void ChainRender::loop(const SnapshotWriter& snapshot) {
   Pace pace;  // the rounds' agreed durations: one that spanned a stall does not end the render early
   double lastSnapshot = elapsed_, lastPrint = elapsed_, lastCheckpoint = elapsed_;
   bool printed = false;
-  const double sittingStart = elapsed_ - since(start_);  // this process's clock, continuing the earlier time
+  const double sittingStart = elapsed_ - secondsSince(start_);  // this process's clock, continuing the earlier time
   const bool tty = ::isatty(STDERR_FILENO);
   const bool anyChains = job_.allreduceMax(pool_.size() > 0 ? 1 : 0) > 0;
   bool more = anyChains && schedule_.anotherRound(rounds_, elapsed_, pace.typical());
@@ -191,7 +190,7 @@ void ChainRender::loop(const SnapshotWriter& snapshot) {
       steps.push_back(schedule_.doneAfter(rounds_ + 1, c) - schedule_.doneAfter(rounds_, c));
     if (pool_.size() > 0) pool_.run(steps, film_);
     ++rounds_;
-    const JobAgreement agreed = job_.agree(sittingStart + since(start_));
+    const JobAgreement agreed = job_.agree(sittingStart + secondsSince(start_));
     pace.add(agreed.elapsed - elapsed_);
     elapsed_ = agreed.elapsed;
     more = !agreed.stop && schedule_.anotherRound(rounds_, elapsed_, pace.typical());

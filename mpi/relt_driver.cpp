@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "checkpoint/checkpoint.h"
+#include "core/clock.h"
 #include "core/error.h"
 #include "interrupt.h"
 #include "mcmc/round_schedule.h"
@@ -31,8 +32,6 @@ double checkpointMeanTarget(const Resumed& checkpoint) {
   }
 }
 
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // The sum of every level's film, reduced onto the root.
 std::vector<double> reducedSum(Job& job, const std::vector<Film>& films) {
@@ -205,7 +204,7 @@ ReltOutcome runRelt(Job& job, Renderer& renderer, const RenderSettings& settings
   std::optional<ReplicaPool> pooled;
   bootstrapPool(pooled, eval, rs, settings.seed, job, checkpoint);
   ReplicaPool& pool = *pooled;
-  const double bootstrapSeconds = job.allreduceMax(since(bootstrapStart));
+  const double bootstrapSeconds = job.allreduceMax(secondsSince(bootstrapStart));
   films.assign(rs.perLevel ? size_t(pool.levels()) : 1, Film(settings.width, settings.height));
 
   const double area = double(settings.width) * settings.height;
@@ -220,7 +219,7 @@ ReltOutcome runRelt(Job& job, Renderer& renderer, const RenderSettings& settings
   else
     resumed.secondsPerRound = perSample * rs.exchangeInterval * double(pool.chainCount()) / job.size();
   // A time budget counts the bootstrap too.
-  resumed.elapsed += job.allreduceMax(since(bootstrapStart));
+  resumed.elapsed += job.allreduceMax(secondsSince(bootstrapStart));
   const double collectiveBefore = job.collectiveSeconds();
   const auto start = Clock::now();
   double lastSnapshot = resumed.elapsed, lastPrint = resumed.elapsed, lastCheckpoint = resumed.elapsed;
@@ -241,7 +240,7 @@ ReltOutcome runRelt(Job& job, Renderer& renderer, const RenderSettings& settings
     saveCheckpoint(job, plan, "relt", progress, films, pool.checkpointPart());
   };
   RoundLoopHooks hooks;
-  hooks.elapsed = [&] { return resumed.elapsed + since(start); };
+  hooks.elapsed = [&] { return resumed.elapsed + secondsSince(start); };
   hooks.stop = [&job] { return job.stopRequested(); };
   hooks.save = [&job] { return job.takeSaveRequest(); };
   // The scaling model replays the stepping times (--trace); at most about 2^20 numbers in all.
@@ -269,7 +268,7 @@ ReltOutcome runRelt(Job& job, Renderer& renderer, const RenderSettings& settings
   if (loop.stopped) markStopAgreed();
   const double roundCollective = job.collectiveSeconds() - collectiveBefore;
   // The loop's agreed time is that of the messages read back (normaliser lag): the real end here.
-  const double elapsed = job.allreduceMax(resumed.elapsed + since(start));
+  const double elapsed = job.allreduceMax(resumed.elapsed + secondsSince(start));
   if (job.isRoot() && tty && lastPrint > 0.0) std::fprintf(stderr, "\n");
   return outcomeOf(job, pool, schedule, loop, area, elapsed, roundCollective);
 }

@@ -13,6 +13,7 @@
 #include "checkpoint/checkpoint.h"
 #include "relt_commit.h"
 #include "checkpoint_io.h"
+#include "core/clock.h"
 #include "core/error.h"
 #include "core/memory.h"
 #include "parallel/workers.h"
@@ -29,8 +30,6 @@
 namespace relt::mpi {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Fails before any work if an output cannot be created (checked on the root, shared with all).
 void checkOutputsWritable(Job& job, const RenderSettings& s) {
@@ -150,7 +149,7 @@ void writeOutputs(const RenderSettings& settings, const Image& image, nlohmann::
   if (stats.value("interrupted", false))
     std::fprintf(stderr, "relt: stopped early by a signal (SIGINT/SIGTERM/SIGUSR1): the image holds the work done so far\n");
   if (!settings.stats.empty()) {
-    stats["wall_seconds"] = since(wallStart);
+    stats["wall_seconds"] = secondsSince(wallStart);
     writeFileAtomically(settings.stats, stats.dump(2) + "\n");
   }
 }
@@ -187,7 +186,7 @@ Image withDirect(Image image, const Image& direct) {
 
 Gathered gatherAfterRender(Job& job, Clock::time_point renderStart, const Renderer& renderer, Film& film, bool reduceFilm = true) {
   Gathered g;
-  g.renderSeconds = job.allreduceMax(since(renderStart));
+  g.renderSeconds = job.allreduceMax(secondsSince(renderStart));
   if (reduceFilm) job.reduceSumToRoot(film.data());
   g.rays = job.allreduceSum(renderer.rays());
   g.dropped = job.allreduceSum(film.droppedSamples());

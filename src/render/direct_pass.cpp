@@ -4,14 +4,13 @@
 #include <bit>
 #include <chrono>
 
+#include "core/clock.h"
 #include "schedule/schedule.h"
 
 namespace relt {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 // Extends the pass over rays [done, end) of every pixel, when the ranks agree between chunks, in
 // chunks, agreeing on stop and save requests after each. A chunk's size follows the slowest rank's
