@@ -15,7 +15,7 @@
 #include "image/image.h"
 #include "parallel/workers.h"
 #include "schedule/schedule.h"
-#include "render_driver.h"
+#include "integrators/render_driver.h"
 #include "render/option_use.h"
 #include "replica/permutation.h"
 #include "scene/gltf_loader.h"
@@ -88,7 +88,7 @@ struct Options {
       if (opt->count() > 0) options.push_back(opt);
     return options;
   }
-  relt::mpi::CheckpointPlan checkpoint;
+  relt::CheckpointPlan checkpoint;
 };
 
 // relt: the ladder (family, levels), how many ladders, the exchanges and where chains live.
@@ -407,7 +407,7 @@ int main(int argc, char** argv) {
     if (o.threads->count() == 0) o.render.threads = threadsOnAuto();
     relt::mpi::startStallWatchdog(o.stallTimeout);
     relt::mpi::MpiJob job(session);
-    relt::mpi::runRender(job, o.render, o.checkpoint);
+    relt::runRender(job, o.render, o.checkpoint);
     return 0;
   } catch (const relt::InputError& e) {
     if (root) std::fprintf(stderr, "relt: error: %s\n", e.what());

@@ -39,6 +39,7 @@ class MpiJob final : public Job {
   bool stopRequested() const override;
   bool takeSaveRequest() override;
   bool stopAgreed() const override;
+  void markStopAgreed() override;
 
   std::vector<std::vector<uint64_t>> transfer(const std::vector<Payload>& sends, const std::vector<int>& receiveFrom,
                                               const std::function<void()>& idle = {}) override {
@@ -48,6 +49,7 @@ class MpiJob final : public Job {
                                                  const std::vector<size_t>& lengths) override {
     return std::make_unique<PendingAllgatherv>(std::move(mine), lengths);
   }
+  std::unique_ptr<RequestChannel> openRequestChannel() override;
   double collectiveSeconds() const override { return mpi::collectiveSeconds(); }
 
  private:

@@ -1,13 +1,14 @@
 #include "request_channel.h"
 
 #include "comm.h"
+#include "replica/round_loop.h"
 
 namespace relt::mpi {
 namespace {
 constexpr int kNoticeTag = 41;  // + the epoch's parity: a rank drains an epoch before the next is sent
 }
 
-RequestChannel::RequestChannel() {
+MpiRequestChannel::MpiRequestChannel() {
   MPI_Comm_dup(MPI_COMM_WORLD, &comm_);
   MPI_Comm_rank(comm_, &rank_);
   MPI_Comm_size(comm_, &size_);
@@ -15,7 +16,7 @@ RequestChannel::RequestChannel() {
   listen();
 }
 
-RequestChannel::~RequestChannel() {
+MpiRequestChannel::~MpiRequestChannel() {
   if (notice_ != MPI_REQUEST_NULL) {
     MPI_Cancel(&notice_);
     MPI_Wait(&notice_, MPI_STATUS_IGNORE);
@@ -23,13 +24,13 @@ RequestChannel::~RequestChannel() {
   MPI_Comm_free(&comm_);
 }
 
-void RequestChannel::listen() {
+void MpiRequestChannel::listen() {
   noticeFrom_ = -1;
   MPI_Irecv(&noticeWord_, 1, MPI_INT, MPI_ANY_SOURCE, kNoticeTag + int(epoch_ & 1u), comm_, &notice_);
 }
 
 // Offers the next round this rank reaches (and its requests); with `notify` first tells the others.
-void RequestChannel::offer(bool notify) {
+void MpiRequestChannel::offer(bool notify) {
   if (notify)
     for (int r = 0; r < size_; ++r) {
       if (r == rank_) continue;
@@ -45,7 +46,7 @@ void RequestChannel::offer(bool notify) {
 
 // Waits for every rank's offer, takes the agreement, receives the notices of this epoch that have
 // not arrived (one from every rank that sent them) and listens for the next epoch's.
-void RequestChannel::complete() {
+void MpiRequestChannel::complete() {
   waitTimed(agreement_);
   offered_ = false;
   std::vector<RequestOffer> offers;
@@ -74,7 +75,7 @@ void RequestChannel::complete() {
   due_ = agreed;
 }
 
-void RequestChannel::poll() {
+void MpiRequestChannel::poll() {
   if (offered_) {  // let it advance; it is taken at the round offered (a finished wait returns at once)
     int done = 0;
     MPI_Test(&agreement_, &done, MPI_STATUS_IGNORE);
@@ -89,7 +90,7 @@ void RequestChannel::poll() {
   offer(false);
 }
 
-std::optional<RequestAgreement> RequestChannel::at(uint64_t rounds, bool stop, bool save) {
+std::optional<RequestAgreement> MpiRequestChannel::at(uint64_t rounds, bool stop, bool save) {
   rounds_ = rounds;
   wantStop_ |= stop;
   wantSave_ |= save;
@@ -106,14 +107,14 @@ std::optional<RequestAgreement> RequestChannel::at(uint64_t rounds, bool stop, b
   return agreed;
 }
 
-void RequestChannel::close() {
+void MpiRequestChannel::close() {
   due_.reset();
   if (!offered_) offer(false);
   complete();
   due_.reset();
 }
 
-void RequestChannel::barrier() {
+void MpiRequestChannel::barrier() {
   MPI_Request request;
   MPI_Ibarrier(comm_, &request);
   waitTimed(request, [this] { poll(); });

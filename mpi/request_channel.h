@@ -12,27 +12,22 @@
 #include <optional>
 #include <vector>
 
-#include "replica/round_loop.h"
+#include "parallel/job.h"
 
 namespace relt::mpi {
 
-class RequestChannel {
+class MpiRequestChannel final : public RequestChannel {
  public:
-  RequestChannel();  // collective (on its own communicator)
-  RequestChannel(const RequestChannel&) = delete;
-  RequestChannel& operator=(const RequestChannel&) = delete;
-  ~RequestChannel();
+  MpiRequestChannel();  // collective (on its own communicator)
+  MpiRequestChannel(const MpiRequestChannel&) = delete;
+  MpiRequestChannel& operator=(const MpiRequestChannel&) = delete;
+  ~MpiRequestChannel() override;
 
-  // After group 0's round: `rounds` rounds done, this rank's requests since the last call. Returns
-  // what the ranks agreed to do at this point, if anything (RoundTransport::requests).
-  std::optional<RequestAgreement> at(uint64_t rounds, bool stop, bool save);
-  // Between chains and while waiting for other ranks: joins an agreement another rank started.
-  void poll();
-  // Collective, at the loop's end on every rank: completes an agreement under way, drops it.
-  void close();
-  // Waits for every rank to get here, polling: before the collectives of snapshots and checkpoints,
-  // which a rank ahead would otherwise wait in while another waits for its offer.
-  void barrier();
+  std::optional<RequestAgreement> at(uint64_t rounds, bool stop, bool save) override;
+  void poll() override;
+  void close() override;
+  // A rank ahead would otherwise wait in a snapshot's collectives while another waits for its offer.
+  void barrier() override;
 
  private:
   void listen();

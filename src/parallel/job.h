@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,29 @@ struct JobAgreement {
 struct Payload {
   int rank;
   std::vector<uint64_t> data;
+};
+
+// A stop or save request the ranks agreed on apart from the round messages: the round loop acts on
+// it after round `round` - 1 (when group 0 has finished it), on every rank.
+struct RequestAgreement {
+  uint64_t round = 0;
+  bool stop = false, save = false;
+};
+
+// Stop and save requests agreed apart from the round messages, for relt's local decisions, whose
+// messages come back many rounds late (mpi/request_channel.h says how the ranks agree).
+class RequestChannel {
+ public:
+  virtual ~RequestChannel() = default;
+  // After group 0's round: `rounds` rounds done, this rank's requests since the last call. Returns
+  // what the ranks agreed to do at this point, if anything.
+  virtual std::optional<RequestAgreement> at(uint64_t rounds, bool stop, bool save) = 0;
+  // Between chains and while waiting for other ranks: joins an agreement another rank started.
+  virtual void poll() = 0;
+  // Collective, at the loop's end on every rank: completes an agreement under way, drops it.
+  virtual void close() = 0;
+  // Waits for every rank to get here, polling: before the collectives of snapshots and checkpoints.
+  virtual void barrier() = 0;
 };
 
 // A gather of every rank's buffer under way (Job::startAllgatherv).
@@ -77,6 +101,8 @@ class Job {
   virtual bool takeSaveRequest() = 0;
   // Not collective: the ranks agreed to stop (by agree()); the render writes what it has.
   virtual bool stopAgreed() const = 0;
+  // Not collective: the ranks agreed to stop by other means (relt's round messages), on every rank.
+  virtual void markStopAgreed() = 0;
 
   // Point-to-point payloads of any length: `sends` go out, and one payload arrives from each rank
   // of `receiveFrom`, returned in that order; between two ranks payloads keep their order. Every
@@ -87,6 +113,9 @@ class Job {
   // Starts a gather of every rank's buffer, rank r's `lengths[r]` long (known to all in advance).
   virtual std::unique_ptr<PendingGather> startAllgatherv(std::vector<double> mine,
                                                          const std::vector<size_t>& lengths) = 0;
+  // A channel for requests apart from the round messages, or none when requests need no channel
+  // (one process acts on its own requests at once).
+  virtual std::unique_ptr<RequestChannel> openRequestChannel() = 0;
   // Not collective: wall-clock seconds this rank has spent inside the calls above.
   virtual double collectiveSeconds() const = 0;
 };

@@ -30,6 +30,7 @@ class LocalJob final : public Job {
   bool stopRequested() const override { return stopRequested_; }
   bool takeSaveRequest() override;
   bool stopAgreed() const override { return stopAgreed_; }
+  void markStopAgreed() override { stopAgreed_ = true; }
   // What a signal would ask of a rank (not collective).
   void requestStop() { stopRequested_ = true; }
   void requestSave() { saveRequested_ = true; }
@@ -39,6 +40,7 @@ class LocalJob final : public Job {
                                               const std::function<void()>& idle = {}) override;
   std::unique_ptr<PendingGather> startAllgatherv(std::vector<double> mine,
                                                  const std::vector<size_t>& lengths) override;
+  std::unique_ptr<RequestChannel> openRequestChannel() override { return nullptr; }
   double collectiveSeconds() const override { return 0.0; }
 
  private:

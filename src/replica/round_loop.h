@@ -14,17 +14,11 @@
 #include <vector>
 
 #include "film/film.h"
+#include "parallel/job.h"
 #include "replica/replica_pool.h"
 #include "replica/replica_schedule.h"
 
 namespace relt {
-
-// A stop or save request the ranks agreed on apart from the round messages: the loop acts on it
-// after round `round` - 1 (when group 0 has finished it), on every rank.
-struct RequestAgreement {
-  uint64_t round = 0;
-  bool stop = false, save = false;
-};
 
 // A rank's offer: the next round it reaches (where it can still act) and its requests. All act at
 // the largest offered round, on every rank's requests together.

@@ -30,7 +30,7 @@ Scene glossyRing() {
 
 namespace {
 
-// As the executable does it (mpi/render_driver.cpp): the directly seen emission first (every row
+// As the executable does it (integrators/render_driver.cpp): the directly seen emission first (every row
 // here), then the chains, which it may hand that emission back to.
 Image directEmission(Renderer& renderer) {
   const RenderSettings& s = renderer.settings();
@@ -58,7 +58,7 @@ Image renderChainsOrSamples(Renderer& renderer) {
   const RenderSettings& s = renderer.settings();
   Film film(s.width, s.height);
   if (s.integrator == Integrator::Relt) {
-    // One process hosts every chain and runs the round loop of mpi/relt_driver with a local transport.
+    // One process hosts every chain and runs the round loop of integrators/relt with a local transport.
     PerWorker<PssEvaluator> eval(s.threads, renderer.context(), s.width, s.height);
     const ReplicaSettings rs = effectiveReplicaSettings(s);
     ReplicaPool pool(eval, rs, s.seed, bootstrapFeatures(eval[0], rs.family, s.seed, rs.bootstrap, 0, 1), 0, 1);
@@ -74,7 +74,7 @@ Image renderChainsOrSamples(Renderer& renderer) {
     return Renderer::resolve(films[0], films[0].data(), replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
   }
   if (isMarkovChain(s.integrator)) {
-    // One process plays every rank: all bootstrap samples, all chains (as mpi/pssmlt_driver does).
+    // One process plays every rank: all bootstrap samples, all chains (as integrators/pssmlt does).
     const PssmltSettings ps = pssmltSettings(s);
     const double area = double(s.width) * s.height;
     const auto total = static_cast<uint64_t>(std::llround(ps.mutationsPerPixel * area));
@@ -97,7 +97,7 @@ Image renderChainsOrSamples(Renderer& renderer) {
     return Renderer::resolve(film, film.data(), pssmltResolveDivisor(total, b, area));
   }
   const int spp = s.spp.value_or(kDefaultSpp);
-  if (s.integrator == Integrator::Erpt) {  // as mpi/erpt_driver does, all work units here
+  if (s.integrator == Integrator::Erpt) {  // as integrators/erpt does, all work units here
     PtEvaluator eval(renderer.context(), s.width, s.height);
     const int bootstrap = kBootstrapPaths;
     const double b = erptBootstrapSum(eval, s.seed, bootstrap, 0, 1) / bootstrap;

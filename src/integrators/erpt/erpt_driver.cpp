@@ -1,4 +1,4 @@
-#include "erpt_driver.h"
+#include "integrators/erpt/erpt_driver.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -8,9 +8,9 @@
 #include "parallel/workers.h"
 #include "pss/chain_defaults.h"
 #include "render/chain_settings.h"
-#include "pass_loop.h"
+#include "integrators/passes/pass_loop.h"
 
-namespace relt::mpi {
+namespace relt {
 namespace {
 
 ErptCounters sumOverRanks(Job& job, const ErptCounters& local) {
@@ -136,4 +136,4 @@ ErptOutcome runErpt(Job& job, Renderer& renderer, const RenderSettings& settings
   return out;
 }
 
-}  // namespace relt::mpi
+}  // namespace relt

@@ -1,4 +1,4 @@
-#include "direct_driver.h"
+#include "integrators/direct/direct_driver.h"
 
 #include <unistd.h>
 
@@ -9,7 +9,7 @@
 #include "render/direct_pass.h"
 #include "schedule/schedule.h"
 
-namespace relt::mpi {
+namespace relt {
 namespace {
 
 // The rows of a film (every rank's, from a checkpoint) this rank renders; the others 0, so that
@@ -131,4 +131,4 @@ DirectEstimate directEmission(Job& job, Renderer& renderer, const RenderSettings
   return out;
 }
 
-}  // namespace relt::mpi
+}  // namespace relt

@@ -4,14 +4,14 @@
 // taken by src/replica from the gathered data; this layer only moves it.
 #include <vector>
 
-#include "checkpoint_io.h"
+#include "checkpoint/checkpoint_io.h"
 #include "parallel/job.h"
 #include "film/film.h"
-#include "pssmlt_driver.h"
+#include "integrators/pssmlt/pssmlt_driver.h"
 #include "render/renderer.h"
 #include "replica/replica_pool.h"
 
-namespace relt::mpi {
+namespace relt {
 
 struct ReltOutcome {
   uint64_t rounds = 0;
@@ -42,4 +42,4 @@ ReltOutcome runRelt(Job& job, Renderer& renderer, const RenderSettings& settings
                     std::vector<Film>& films, const SnapshotWriter& snapshot, const CheckpointPlan& plan,
                     const Resumed* resumed);
 
-}  // namespace relt::mpi
+}  // namespace relt

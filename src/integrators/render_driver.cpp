@@ -1,4 +1,4 @@
-#include "render_driver.h"
+#include "integrators/render_driver.h"
 
 #include <unistd.h>
 
@@ -12,22 +12,21 @@
 
 #include "checkpoint/checkpoint.h"
 #include "relt_commit.h"
-#include "checkpoint_io.h"
+#include "checkpoint/checkpoint_io.h"
 #include "core/clock.h"
 #include "core/error.h"
 #include "core/memory.h"
 #include "parallel/workers.h"
 #include "render/renderer.h"
-#include "direct_driver.h"
-#include "erpt_driver.h"
-#include "interrupt.h"
-#include "pass_loop.h"
-#include "pssmlt_driver.h"
-#include "relt_driver.h"
+#include "integrators/direct/direct_driver.h"
+#include "integrators/erpt/erpt_driver.h"
+#include "integrators/passes/pass_loop.h"
+#include "integrators/pssmlt/pssmlt_driver.h"
+#include "integrators/relt/relt_driver.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_summary.h"
 
-namespace relt::mpi {
+namespace relt {
 namespace {
 
 
@@ -232,7 +231,7 @@ void addMutationRates(nlohmann::json& j, uint64_t mutations, const Gathered& g, 
 double ratio(uint64_t a, uint64_t b) { return b ? double(a) / double(b) : 0.0; }
 
 // Replica exchange: the ladder's diagnostics go to stats.json (DESIGN §3.5).
-nlohmann::json reltStats(const mpi::ReltOutcome& o) {
+nlohmann::json reltStats(const ReltOutcome& o) {
   nlohmann::json j;
   j["rounds"] = o.rounds;
   j["steps_per_chain"] = o.stepsPerChain;
@@ -277,7 +276,7 @@ void renderRelt(Job& job, Renderer& renderer, const RenderSettings& settings, Cl
   const bool layers = settings.replica.perLevel;
   std::vector<Film> films;
   int snapshots = 0;
-  const mpi::ReltOutcome o = mpi::runRelt(job, renderer, chainSettings(settings, direct), films,
+  const ReltOutcome o = runRelt(job, renderer, chainSettings(settings, direct), films,
                                           [&](const std::vector<double>& sums, double d) {
     writeImages(settings, withDirect(Renderer::resolve(films[0], sums, d), direct.image));
     ++snapshots;
@@ -512,4 +511,4 @@ void runRender(Job& job, RenderSettings settings, CheckpointPlan plan) {
   renderPasses(job, renderer, settings, wallStart, plan, resumed ? &*resumed : nullptr);
 }
 
-}  // namespace relt::mpi
+}  // namespace relt

@@ -1,4 +1,4 @@
-#include "relt_driver.h"
+#include "integrators/relt/relt_driver.h"
 
 #include <unistd.h>
 
@@ -12,15 +12,13 @@
 #include "checkpoint/checkpoint.h"
 #include "core/clock.h"
 #include "core/error.h"
-#include "interrupt.h"
 #include "mcmc/round_schedule.h"
 #include "parallel/workers.h"
 #include "replica/replica_schedule.h"
 #include "replica/round_loop.h"
-#include "request_channel.h"
 #include "schedule/schedule.h"
 
-namespace relt::mpi {
+namespace relt {
 namespace {
 
 // The family's scale of the render a checkpoint continues (a broken part: one named error).
@@ -64,7 +62,7 @@ ExchangeTally sumOverRanks(Job& job, const ExchangeTally& mine) {
 class MpiTransport final : public RoundTransport {
  public:
   MpiTransport(Job& job, bool localDecisions) : job_(job) {
-    if (localDecisions) channel_.emplace();
+    if (localDecisions) channel_ = job.openRequestChannel();
     if (channel_) idle_ = [this] { channel_->poll(); };
   }
   void post(int group, std::vector<double> mine, const std::vector<size_t>& lengths) override {
@@ -116,7 +114,7 @@ class MpiTransport final : public RoundTransport {
  private:
   Job& job_;
   std::vector<std::deque<std::unique_ptr<PendingGather>>> pending_;  // per group, oldest first
-  std::optional<RequestChannel> channel_;
+  std::unique_ptr<RequestChannel> channel_;  // none: requests travel in the round messages
   std::function<void()> idle_;  // empty without a channel: plain blocking waits
 };
 
@@ -168,7 +166,7 @@ ReltOutcome outcomeOf(Job& job, const ReplicaPool& pool, const ReplicaSchedule& 
   out.nonFinitePerRank = job.allgather(double(nonFinite));
   for (const LevelCounters& c : pool.hostedCounters()) {
     LevelCounters s;
-    static_cast<ChainCounters&>(s) = relt::mpi::sumOverRanks(job, static_cast<const ChainCounters&>(c));
+    static_cast<ChainCounters&>(s) = relt::sumOverRanks(job, static_cast<const ChainCounters&>(c));
     s.nonFinite = job.allreduceSum(c.nonFinite);
     s.seconds = job.allreduceSum(c.seconds);
     out.perLevel.push_back(s);
@@ -265,7 +263,7 @@ ReltOutcome runRelt(Job& job, Renderer& renderer, const RenderSettings& settings
   };
   const RoundLoopResult loop = runRoundLoop(pool, schedule, transport, films, hooks, resumed);
   pool.gatherWorkerFilms(films);
-  if (loop.stopped) markStopAgreed();
+  if (loop.stopped) job.markStopAgreed();
   const double roundCollective = job.collectiveSeconds() - collectiveBefore;
   // The loop's agreed time is that of the messages read back (normaliser lag): the real end here.
   const double elapsed = job.allreduceMax(resumed.elapsed + secondsSince(start));
@@ -273,4 +271,4 @@ ReltOutcome runRelt(Job& job, Renderer& renderer, const RenderSettings& settings
   return outcomeOf(job, pool, schedule, loop, area, elapsed, roundCollective);
 }
 
-}  // namespace relt::mpi
+}  // namespace relt

@@ -2,14 +2,14 @@
 // The distributed part of erpt: bootstrap shares, then seeds by work unit (sample index, row).
 #include <functional>
 
-#include "checkpoint_io.h"
+#include "checkpoint/checkpoint_io.h"
 #include "parallel/job.h"
 #include "film/film.h"
 #include "mcmc/erpt.h"
-#include "pass_loop.h"
+#include "integrators/passes/pass_loop.h"
 #include "render/renderer.h"
 
-namespace relt::mpi {
+namespace relt {
 
 struct ErptOutcome {
   double normaliser = 0.0;  // mean energy of the bootstrap samples
@@ -30,4 +30,4 @@ ErptOutcome runErpt(Job& job, Renderer& renderer, const RenderSettings& settings
                     const std::function<void(const Image&)>& snapshot = {}, const CheckpointPlan& plan = {},
                     const Resumed* resumed = nullptr);
 
-}  // namespace relt::mpi
+}  // namespace relt

@@ -17,7 +17,7 @@
 #include "schedule/schedule.h"
 #include "render/settings.h"
 
-namespace relt::mpi {
+namespace relt {
 
 // A render resumed from a checkpoint starts at `at` (a pass, possibly inside it) after `elapsed`.
 struct PassStart {
@@ -56,4 +56,4 @@ struct PassHooks {
 PassPoint runPasses(Job& job, const RenderSettings& settings, PassFilm& film, const PassHooks& hooks,
                     const PassStart& start = {});
 
-}  // namespace relt::mpi
+}  // namespace relt

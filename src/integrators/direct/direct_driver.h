@@ -7,13 +7,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "checkpoint_io.h"
+#include "checkpoint/checkpoint_io.h"
 #include "parallel/job.h"
 #include "film/film.h"
 #include "image/image.h"
 #include "render/renderer.h"
 
-namespace relt::mpi {
+namespace relt {
 
 struct DirectEstimate {
   Film film{0, 0};         // this rank's rows, not reduced (what checkpoints keep)
@@ -36,4 +36,4 @@ DirectEstimate directEmission(Job& job, Renderer& renderer, const RenderSettings
                               const CheckpointPlan& plan, std::optional<Resumed>& resumed,
                               const std::function<void(const Image&)>& snapshot);
 
-}  // namespace relt::mpi
+}  // namespace relt

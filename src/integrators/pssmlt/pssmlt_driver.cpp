@@ -1,4 +1,4 @@
-#include "pssmlt_driver.h"
+#include "integrators/pssmlt/pssmlt_driver.h"
 
 #include <unistd.h>
 
@@ -18,7 +18,7 @@
 #include "schedule/pace.h"
 #include "schedule/schedule.h"
 
-namespace relt::mpi {
+namespace relt {
 namespace {
 
 
@@ -243,4 +243,4 @@ PssmltOutcome runPssmlt(Job& job, Renderer& renderer, const RenderSettings& sett
   return render.outcome();
 }
 
-}  // namespace relt::mpi
+}  // namespace relt

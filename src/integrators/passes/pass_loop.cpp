@@ -1,4 +1,4 @@
-#include "pass_loop.h"
+#include "integrators/passes/pass_loop.h"
 
 #include <unistd.h>
 
@@ -13,7 +13,7 @@
 #include "schedule/pace.h"
 #include "render/renderer.h"
 
-namespace relt::mpi {
+namespace relt {
 namespace {
 
 // The root's progress line: passes done (and the share of the current one) of the budget.
@@ -125,4 +125,4 @@ PassPoint runPasses(Job& job, const RenderSettings& settings, PassFilm& film, co
   }
 }
 
-}  // namespace relt::mpi
+}  // namespace relt

@@ -1,11 +1,11 @@
-#include "checkpoint_io.h"
+#include "checkpoint/checkpoint_io.h"
 
 #include "checkpoint/checkpoint.h"
 #include "core/clock.h"
 #include "core/error.h"
 #include "core/words.h"
 
-namespace relt::mpi {
+namespace relt {
 namespace {
 
 CheckpointTally g_tally;
@@ -109,4 +109,4 @@ std::vector<double> Resumed::takeLastFilm(Job& job) {
   return last;
 }
 
-}  // namespace relt::mpi
+}  // namespace relt

@@ -2,14 +2,14 @@
 // The distributed part of pssmlt and mmlt: bootstrap shares, chain ownership, and the sums.
 #include <functional>
 
-#include "checkpoint_io.h"
+#include "checkpoint/checkpoint_io.h"
 #include "parallel/job.h"
 #include "film/film.h"
 #include "mcmc/mmlt.h"
 #include "mcmc/pssmlt.h"
 #include "render/renderer.h"
 
-namespace relt::mpi {
+namespace relt {
 
 struct PssmltOutcome {
   double normaliser = 0.0;        // b: mean target of the bootstrap samples
@@ -34,4 +34,4 @@ PssmltOutcome runPssmlt(Job& job, Renderer& renderer, const RenderSettings& sett
                         const SnapshotWriter& snapshot, const CheckpointPlan& plan = {},
                         const Resumed* resumed = nullptr);
 
-}  // namespace relt::mpi
+}  // namespace relt

@@ -13,7 +13,7 @@
 #include "film/film.h"
 #include "parallel/job.h"
 
-namespace relt::mpi {
+namespace relt {
 
 struct CheckpointPlan {
   std::string dir;          // --checkpoint: where to write ("" = never)
@@ -62,4 +62,4 @@ const CheckpointTally& checkpointTally();
 // Refuses a checkpoint of another integrator, scene or settings (before any rendering work).
 Resumed loadCheckpoint(Job& job, const CheckpointPlan& plan, const char* integrator);
 
-}  // namespace relt::mpi
+}  // namespace relt
