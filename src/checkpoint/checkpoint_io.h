@@ -1,6 +1,6 @@
 #pragma once
-// Checkpoints over MPI (the format and its decisions are in src/checkpoint): films reduced onto
-// the root, every rank's state gathered there and written by the root; read back by the root,
+// Checkpoints through the job (the format and its decisions are in checkpoint.h): films reduced
+// onto the root, every rank's state gathered there and written by the root; read back by the root,
 // checked against this render, and shared with every rank. Collective; a failure throws the same
 // InputError on every rank.
 #include <span>

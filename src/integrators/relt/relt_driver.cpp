@@ -57,11 +57,12 @@ ExchangeTally sumOverRanks(Job& job, const ExchangeTally& mine) {
   return out;
 }
 
-// The round loop's transport over MPI: one nonblocking allgatherv per group and round; chain
-// states point to point; with local decisions, stop and save requests on a channel of their own.
-class MpiTransport final : public RoundTransport {
+// The round loop's transport over the job: one nonblocking gather per group and round; chain
+// states point to point; with local decisions, stop and save requests on the job's request
+// channel (none in a job of one process, which acts on its requests at once).
+class JobTransport final : public RoundTransport {
  public:
-  MpiTransport(Job& job, bool localDecisions) : job_(job) {
+  JobTransport(Job& job, bool localDecisions) : job_(job) {
     if (localDecisions) channel_ = job.openRequestChannel();
     if (channel_) idle_ = [this] { channel_->poll(); };
   }
@@ -90,7 +91,7 @@ class MpiTransport final : public RoundTransport {
   }
 
   void progress() override {
-    // One test per group: each MPI call runs the progress engine for every pending request.
+    // One test per group: under MPI each call runs the progress engine for every pending request.
     for (const auto& group : pending_)
       if (!group.empty()) group.front()->test();
     if (channel_) channel_->poll();
@@ -222,7 +223,7 @@ ReltOutcome runRelt(Job& job, Renderer& renderer, const RenderSettings& settings
   const auto start = Clock::now();
   double lastSnapshot = resumed.elapsed, lastPrint = resumed.elapsed, lastCheckpoint = resumed.elapsed;
   const bool tty = ::isatty(STDERR_FILENO);
-  MpiTransport transport(job, pool.localDecisions());
+  JobTransport transport(job, pool.localDecisions());
   auto writeSnapshot = [&](uint64_t rounds, double elapsed) {
     transport.meet();
     pool.gatherWorkerFilms(films);

@@ -1,6 +1,6 @@
 #pragma once
 // The distributed part of replica exchange light transport: bootstrap shares, the round loop with
-// its one collective (MPI_Allgatherv of every rank's round message), snapshots. All decisions are
+// its one collective (the job's gather of every rank's round message), snapshots. All decisions are
 // taken by src/replica from the gathered data; this layer only moves it.
 #include <vector>
 
