@@ -16,8 +16,8 @@
 #include "parallel/workers.h"
 #include "schedule/schedule.h"
 #include "integrators/render_driver.h"
-#include "render/option_use.h"
-#include "replica/permutation.h"
+#include "integrators/option_checks.h"
+#include "integrators/registry.h"
 #include "scene/gltf_loader.h"
 #include "scene/scene_summary.h"
 
@@ -26,26 +26,20 @@ namespace {
 constexpr int kExitInput = 2;
 constexpr int kExitInternal = 1;
 
-// A finite number that `accepts` takes, described as `range` ("> 0"): CLI::Range lets NaN
-// through and CLI::PositiveNumber names its range up to the largest double.
-CLI::Validator finiteNumber(const std::function<bool(double)>& accepts, const std::string& range) {
-  return CLI::Validator(
-      [accepts, range](std::string& text) {
-        double v = std::nan("");
-        try {
-          v = std::stod(text);
-        } catch (const std::exception&) {
-        }
-        return std::isfinite(v) && accepts(v) ? std::string() : "must be a number " + range + ", got " + text;
-      },
-      range);
+const CLI::Validator kPositive = relt::positiveNumber();
+
+// The registry's integrators: their names, and "pt (path tracing ...), bdpt (...)" for --help.
+std::vector<std::string> integratorNames() {
+  std::vector<std::string> names;
+  for (const relt::IntegratorEntry* entry : relt::integrators()) names.push_back(entry->kind.name);
+  return names;
 }
 
-const CLI::Validator kPositive = finiteNumber([](double v) { return v > 0.0; }, "> 0");
-
-CLI::Validator finiteIn(double lo, double hi) {
-  return finiteNumber([lo, hi](double v) { return v >= lo && v <= hi; },
-                      "in [" + CLI::detail::to_string(lo) + ", " + CLI::detail::to_string(hi) + "]");
+std::string integratorList() {
+  std::string list;
+  for (const relt::IntegratorEntry* entry : relt::integrators())
+    list += (list.empty() ? "" : ", ") + entry->kind.name + " (" + entry->summary + ")";
+  return list;
 }
 
 // An unsigned 64-bit integer in decimal (CLI11 takes -1 as 2^64 - 1 and clamps what is larger).
@@ -71,9 +65,7 @@ std::string unknownSubcommand(int argc, char** argv, const CLI::App& app) {
 
 struct Options {
   relt::RenderSettings render;
-  std::string integrator = "bdpt", mis = "power";
-  std::string family = "kitaoka", exchange = "deo", placement = "auto", misLevels = "balance", init = "resample";
-  std::string directSpp = "auto";
+  std::string integrator = relt::kDefaultIntegrator, mis = "power";
   CLI::App* renderCommand = nullptr;
   std::string infoScene;
   std::string compareA, compareB, compareDiff, comparePng;
@@ -81,88 +73,15 @@ struct Options {
   std::string averageOutput, averagePng;
   double stallTimeout = 120.0;
   CLI::Option* threads = nullptr;
-  // The render options given on the command line.
-  std::vector<const CLI::Option*> given() const {
-    std::vector<const CLI::Option*> options;
+  // The render options given on the command line, by long name.
+  relt::GivenOptions given() const {
+    relt::GivenOptions names;
     for (const CLI::Option* opt : renderCommand->get_options())
-      if (opt->count() > 0) options.push_back(opt);
-    return options;
+      if (opt->count() > 0) names.push_back(opt->get_name());
+    return names;
   }
   relt::CheckpointPlan checkpoint;
 };
-
-// relt: the ladder (family, levels), how many ladders, the exchanges and where chains live.
-void addReplicaOptions(CLI::App& cmd, Options& o) {
-  relt::ReplicaSettings& r = o.render.replica;
-  // Only relt takes these (render/option_use.cpp refuses them for the others).
-  cmd.add_option("--family", o.family, "relt: target family of the levels")
-      ->check(CLI::IsMember({"kitaoka", "relaxed", "tempered"}))
-      ->capture_default_str();
-  cmd.add_option("--levels", r.family.levels, "relt: levels per ladder (relaxed, tempered; kitaoka has 4)")
-      ->check(CLI::Range(2, relt::kMaxLevels))
-      ->capture_default_str();
-  cmd.add_option("--ladders", r.ladders, "relt: number of ladders (chains = ladders x levels)")
-      ->check(CLI::Range(1, 1 << 16))
-      ->capture_default_str();
-  cmd.add_option("--exchange", o.exchange, "relt: exchange move between levels")
-      ->check(CLI::IsMember({"deo", "neighbour", "permutation", "swap", "eem"}))
-      ->capture_default_str();
-  cmd.add_option("--exchange-interval", r.exchangeInterval, "relt: steps per chain between exchanges")
-      ->check(CLI::Range(1, 1 << 20))
-      ->capture_default_str();
-  cmd.add_option("--normaliser-lag", r.normaliserLag,
-                 "relt: rounds between taking large-step sums and using them in the normalisers (with packed "
-                 "placement a rank may run this many rounds ahead of the slowest)")
-      ->check(CLI::Range(1, 1024))
-      ->capture_default_str();
-  cmd.add_option("--normaliser-lag-growth", r.normaliserLagGrowth,
-                 "relt: the lag grows as rounds / N from --normaliser-lag to 8 times it, so ranks of a long "
-                 "render wait less for slow phases of others (0: a fixed lag)")
-      ->check(CLI::Range(0, 1 << 20))
-      ->capture_default_str();
-  cmd.add_option("--placement", o.placement,
-                 "relt: chains over ranks (spread: chain c on rank c mod P; packed: whole ladders, exchanges decided "
-                 "locally; auto: packed above 8 ranks when ladders >= 2 x ranks)")
-      ->check(CLI::IsMember({"auto", "spread", "packed"}))
-      ->capture_default_str();
-  cmd.add_option("--balance-window", r.balanceWindow,
-                 "relt: seconds of stepping between moves of chains to ranks in proportion to their measured "
-                 "speed (0: placement never changes)")
-      ->check(CLI::Range(0.0, 1e6))
-      ->capture_default_str();
-  cmd.add_option("--mis-levels", o.misLevels, "relt: MIS heuristic over levels")
-      ->check(CLI::IsMember({"balance", "power"}))
-      ->capture_default_str();
-  cmd.add_option("--init", o.init, "relt: first states (resample the bootstrap per level, or population annealing)")
-      ->check(CLI::IsMember({"resample", "annealing"}))
-      ->capture_default_str();
-  cmd.add_flag("--per-level", r.perLevel, "relt: also write each level's contribution as an EXR layer levelK");
-  cmd.add_option("--trace", o.render.trace,
-                 "relt: write every rank's stepping time of each group round (the scaling model's input) as JSON");
-  cmd.add_option("--relaxed-eps", r.family.relaxedEps1, "relt relaxed: eps_1 as a multiple of the mean of I")
-      ->check(kPositive)
-      ->capture_default_str();
-  cmd.add_option("--relaxed-ratio", r.family.relaxedRatio, "relt relaxed: eps_{k+1} / eps_k")
-      ->check(CLI::Range(1.0, 1e6))
-      ->capture_default_str();
-  cmd.add_option("--kitaoka-delta", r.family.kitaokaDelta, "relt kitaoka: weight of L5 in the specific replica")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
-  cmd.add_option("--temperature-max", r.family.temperatureMax, "relt tempered: temperature of the top level")
-      ->check(CLI::Range(1.0, 1e8))
-      ->capture_default_str();
-  cmd.add_option("--regularisation", r.family.regularisation,
-                 "relt tempered: rho_0 of the connection roughness floor rho_0 (1 + n)^-gamma (0 = off)")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
-  cmd.add_option("--regularisation-decay", r.family.regularisationDecay,
-                 "relt tempered: gamma of the regularisation schedule")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
-  cmd.add_option("--energy-rings", r.exchange.energyRings, "relt eem: number of energy rings (0: one per level)")
-      ->check(CLI::Range(0, 1024))
-      ->capture_default_str();
-}
 
 void addRenderOptions(CLI::App& cmd, Options& o) {
   relt::RenderSettings& r = o.render;
@@ -170,50 +89,20 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("-o,--output", r.output, "output image: .exr (OpenEXR, float RGB, with metadata) or .png (sRGB)")->required();
   cmd.add_option("--png", r.png, "also write an sRGB PNG preview");
   cmd.add_option("--stats", r.stats, "write settings and statistics as JSON");
-  cmd.add_option("--integrator", o.integrator, "light transport algorithm")
-      ->check(CLI::IsMember({"pt", "bdpt", "pssmlt", "mmlt", "erpt", "relt"}))
+  cmd.add_option("--integrator", o.integrator, "light transport algorithm: " + integratorList())
+      ->check(CLI::IsMember(integratorNames()))
       ->capture_default_str();
-  auto* spp = cmd.add_option("--spp", r.spp, "samples per pixel (default " + std::to_string(relt::kDefaultSpp) + ")")->check(CLI::Range(1, 1 << 24));
-  auto* time = cmd.add_option("--time", r.seconds, "render for this many seconds (decided collectively)")
-                   ->check(kPositive);
-  auto* mpp = cmd.add_option("--mutations-per-pixel", r.mutationsPerPixel,
-                             "Markov-chain integrators: mutations per pixel (default " + CLI::detail::to_string(relt::kDefaultMutationsPerPixel) + ")")
-                  ->check(CLI::Range(1e-3, 1e6));
+  CLI::Option* time = cmd.add_option("--time", r.seconds, "render for this many seconds (decided collectively)")
+                          ->check(kPositive);
+  relt::addIntegratorOptions(cmd, r);
+  CLI::Option* spp = cmd.get_option("--spp");
+  CLI::Option* mpp = cmd.get_option("--mutations-per-pixel");
   spp->excludes(time);
   mpp->excludes(spp);
   mpp->excludes(time);
-  cmd.add_option("--chains", r.chains, "pssmlt, mmlt: number of chains (independent of the rank count)")
-                 ->check(CLI::Range(1, 1 << 20))
-                 ->capture_default_str();
-  addReplicaOptions(cmd, o);
-  cmd.add_option("--large-step-probability", r.largeStepProbability, "pssmlt, mmlt, relt: probability of a large step")
-      ->check(CLI::Range(0.0, 1.0))
-      ->capture_default_str();
-  cmd.add_option("--small-step-min", r.smallStepMin, "pssmlt, mmlt, erpt, relt: Kelemen small step, smallest size s1")
-      ->check(CLI::Range(1e-7, 0.5))
-      ->capture_default_str();
-  cmd.add_option("--small-step-max", r.smallStepMax, "pssmlt, mmlt, erpt, relt: Kelemen small step, largest size s2")
-      ->check(CLI::Range(1e-7, 0.5))
-      ->capture_default_str();
-  cmd.add_option("--direct-emission-spp", o.directSpp,
-                 "pssmlt, relt: estimate the directly seen emission apart with N camera rays per pixel (a shifted "
-                 "(0,2)-sequence: powers of two are best) and leave the chains the longer paths (0: the chains do it all; "
-                 "auto: about 6 % of the budget, 2 x mutations per pixel rounded to a power of two, none when no emitter "
-                 "is in view)")
-      ->check(CLI::IsMember({"auto"}) | CLI::Range(0, relt::kDirectMaxSpp))
-      ->capture_default_str();
   cmd.add_option("--snapshot-every", r.snapshotEvery,
                  "write the image so far (atomically) every this many seconds")
       ->check(kPositive);
-  cmd.add_option("--erpt-max-consecutive", r.erptMaxConsecutive,
-                 "erpt: stop depositing after this many mutations on one pixel (biased noise filter; 0 = off)")
-      ->check(CLI::Range(0, 1 << 20))
-      ->capture_default_str();
-  cmd.add_flag("--erpt-proposal-filter", r.erptProposalFilter,
-               "erpt: scale pixels by blurred / actual proposed mutations (biased noise filter)");
-  cmd.add_option("--chain-length", r.chainLength, "erpt: mutations per energy-redistribution chain")
-      ->check(CLI::Range(1, 1 << 20))
-      ->capture_default_str();
   cmd.add_option("--width", r.width, "image width (default: scene extras, else 256)")->check(CLI::Range(1, relt::kMaxImageSide));
   cmd.add_option("--height", r.height, "image height (default: scene extras, else 256)")->check(CLI::Range(1, relt::kMaxImageSide));
   cmd.add_option("--max-depth", r.maxDepth, "maximum path segments (default: scene extras, else 8)")
@@ -226,7 +115,7 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
                              "with the node's other ranks unless mpirun binds them); the image does not depend on it")
                   ->check(CLI::Range(1, relt::kMaxWorkers));
   cmd.add_option("--camera", r.camera, "camera name (default: the first perspective camera)");
-  cmd.add_option("--exposure", r.exposure, "PNG exposure in stops")->check(finiteIn(-64.0, 64.0))->capture_default_str();
+  cmd.add_option("--exposure", r.exposure, "PNG exposure in stops")->check(relt::finiteIn(-64.0, 64.0))->capture_default_str();
   cmd.add_option("--stall-timeout", o.stallTimeout,
                  "end the job with an error when a rank waits this many seconds for the others (0: never)")
       ->check(CLI::Range(0.0, 1e6))
@@ -243,43 +132,12 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
   cmd.add_option("--mis", o.mis, "MIS heuristic")->check(CLI::IsMember({"power", "balance"}))->capture_default_str();
 }
 
-// The image format follows -o's extension; --png is a PNG; layers need an EXR.
+// The image format follows -o's extension; --png is a PNG.
 void checkOutputNames(const relt::RenderSettings& r) {
   const std::optional<relt::ImageFormat> format = relt::imageFormatOf(r.output);
   if (!format) throw relt::InputError(r.output, "", "unknown image format: name the output .exr or .png");
   if (!r.png.empty() && relt::imageFormatOf(r.png) != relt::ImageFormat::Png)
     throw relt::InputError(r.png, "--png", "a PNG preview's name ends in .png");
-  if (r.replica.perLevel && format != relt::ImageFormat::Exr)
-    throw relt::InputError(r.output, "--per-level", "the levels are EXR layers: name the output .exr");
-}
-
-// Replica options belong to relt alone, and a few combinations cannot work.
-void checkReplicaOptions(Options& o) {
-  relt::RenderSettings& r = o.render;
-  if (r.integrator != relt::Integrator::Relt) return;
-  r.replica.family.kind = *relt::parseFamily(o.family);
-  r.replica.exchange.move = *relt::parseExchangeMove(o.exchange);
-  r.replica.placement = *relt::parsePlacement(o.placement);
-  r.replica.beta = o.misLevels == "power" ? 2.0 : 1.0;
-  r.replica.init = o.init == "annealing" ? relt::InitKind::Annealing : relt::InitKind::Resample;
-  // Family options belong to their family.
-  const std::vector<std::pair<std::string, relt::FamilyKind>> owner = {
-      {"--relaxed-eps", relt::FamilyKind::Relaxed},       {"--relaxed-ratio", relt::FamilyKind::Relaxed},
-      {"--kitaoka-delta", relt::FamilyKind::Kitaoka},     {"--temperature-max", relt::FamilyKind::Tempered},
-      {"--regularisation", relt::FamilyKind::Tempered},   {"--regularisation-decay", relt::FamilyKind::Tempered}};
-  for (const CLI::Option* opt : o.given()) {
-    for (const auto& [name, kind] : owner)
-      if (opt->get_name() == name && kind != r.replica.family.kind)
-        throw relt::InputError("", name, std::string("only for --family ") + relt::familyName(kind));
-  }
-  if (r.replica.family.kind == relt::FamilyKind::Kitaoka) {
-    for (const CLI::Option* opt : o.given())
-      if (opt->get_name() == "--levels")
-        throw relt::InputError("", opt->get_name(), "not for --family kitaoka (its four levels are fixed)");
-    r.replica.family.levels = 4;
-  }
-  if (r.replica.exchange.move == relt::ExchangeMove::Permutation && r.replica.family.levels > relt::kMaxPermutationLevels)
-    throw relt::InputError("", "--exchange", "permutation needs at most 12 levels (its cost is M 2^M)");
 }
 
 // An output of compare or average must be named for the one format it is written in.
@@ -332,18 +190,8 @@ int runInfo(const Options& o, bool root) {
 
 // The integrator named by --integrator; an option it does not use is refused.
 void checkRenderOptions(Options& o) {
-  o.render.integrator = o.integrator == "pt"       ? relt::Integrator::PathTracing
-                        : o.integrator == "bdpt"   ? relt::Integrator::Bdpt
-                        : o.integrator == "pssmlt" ? relt::Integrator::Pssmlt
-                        : o.integrator == "mmlt"   ? relt::Integrator::Mmlt
-                        : o.integrator == "relt"   ? relt::Integrator::Relt
-                                                   : relt::Integrator::Erpt;
-  for (const CLI::Option* opt : o.given())
-    if (const auto why = relt::unusedOptionReason(opt->get_name(), o.render.integrator))
-      throw relt::InputError("", opt->get_name(), *why);
-  if (o.render.smallStepMin >= o.render.smallStepMax)
-    throw relt::InputError("", "--small-step-min", "must be smaller than --small-step-max");
-  o.render.directSpp = o.directSpp == "auto" ? relt::kDirectSppAuto : std::stoi(o.directSpp);
+  relt::selectIntegrator(o.render, o.integrator);
+  relt::validateIntegratorOptions(o.render, o.given());
 }
 
 // --threads on auto; collective, as ranks on a node are counted.
@@ -402,7 +250,6 @@ int main(int argc, char** argv) {
     if (*info) return runInfo(o, root);
     checkRenderOptions(o);
     checkOutputNames(o.render);
-    checkReplicaOptions(o);
     o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
     if (o.threads->count() == 0) o.render.threads = threadsOnAuto();
     relt::mpi::startStallWatchdog(o.stallTimeout);

@@ -100,18 +100,4 @@ MmltChainPlan planMmltChains(const std::vector<double>& targets, int maxDepth, i
   return plan;
 }
 
-ChainCounters runMmltChains(PerWorker<MmltEvaluator>& evals, const std::vector<double>& bootstrapTargets, uint64_t seed,
-                            const PssmltSettings& settings, const std::vector<int>& chains, uint64_t totalMutations,
-                            Film& film, std::vector<ChainCounters>* perDepth) {
-  const MmltEvaluator& eval = evals[0];
-  ChainPool pool(nullptr, &evals, bootstrapTargets, seed, settings, chains);
-  pool.run(chainSteps(chains, totalMutations, settings.chains, pool.size()), film);
-  std::vector<ChainCounters> depths = pool.perDepth();
-  if (depths.empty()) depths.assign(static_cast<size_t>(eval.maxDepth()), ChainCounters{});
-  // All chains are here, so these counters are the global ones the weights need.
-  pool.mergeDepthFilms(mmltDepthWeights(bootstrapTargets, eval.maxDepth(), depths), film);
-  if (perDepth) *perDepth = depths;
-  return pool.counters();
-}
-
 }  // namespace relt

@@ -63,9 +63,4 @@ struct MmltChainPlan {
 };
 MmltChainPlan planMmltChains(const std::vector<double>& bootstrapTargets, int maxDepth, int chains);
 
-// Per-depth acceptance counters are kept too (stats.json reports them).
-ChainCounters runMmltChains(PerWorker<MmltEvaluator>& evals, const std::vector<double>& bootstrapTargets, uint64_t seed,
-                            const PssmltSettings& settings, const std::vector<int>& chains, uint64_t totalMutations,
-                            Film& film, std::vector<ChainCounters>* perDepth = nullptr);
-
 }  // namespace relt

@@ -87,20 +87,4 @@ StreamValues McmcChain::restoreState(const std::vector<uint64_t>& words) {
   return values;
 }
 
-ChainCounters runChains(PerWorker<PssEvaluator>& evals, const std::vector<double>& bootstrapTargets, uint64_t seed,
-                        const PssmltSettings& settings, const std::vector<int>& chains, uint64_t totalMutations,
-                        Film& film) {
-  ChainPool pool(&evals, nullptr, bootstrapTargets, seed, settings, chains);
-  pool.run(chainSteps(chains, totalMutations, settings.chains, pool.size()), film);
-  return pool.counters();
-}
-
-std::vector<uint64_t> chainSteps(const std::vector<int>& chains, uint64_t totalMutations, int chainCount,
-                                 size_t poolSize) {
-  std::vector<uint64_t> steps;
-  if (poolSize == 0) return steps;
-  for (int c : chains) steps.push_back(chainMutations(totalMutations, chainCount, c));
-  return steps;
-}
-
 }  // namespace relt

@@ -135,13 +135,4 @@ inline double pssmltResolveDivisor(uint64_t totalMutations, double normaliser, d
   return normaliser > 0.0 ? double(totalMutations) / (normaliser * filmArea) : 0.0;
 }
 
-// Steps of each chain in `chains` for a render of totalMutations (empty if the pool has no chains).
-std::vector<uint64_t> chainSteps(const std::vector<int>& chains, uint64_t totalMutations, int chainCount,
-                                 size_t poolSize);
-
-// Runs `mutations` steps of every chain in `chains` on one film (what one rank does).
-ChainCounters runChains(PerWorker<PssEvaluator>& evals, const std::vector<double>& bootstrapTargets, uint64_t seed,
-                        const PssmltSettings& settings, const std::vector<int>& chains, uint64_t totalMutations,
-                        Film& film);
-
 }  // namespace relt

@@ -4,8 +4,6 @@
 
 namespace relt {
 
-bool samplesStayInTheirRow(Integrator integrator) { return integrator == Integrator::PathTracing; }
-
 PassFilm::PassFilm(int width, int height, bool rowsStandAlone, size_t tallySize, int workers)
     : rowsStandAlone_(rowsStandAlone),
       films_(rowsStandAlone ? 1 : 2, Film(width, height)),

@@ -15,9 +15,6 @@
 
 namespace relt {
 
-// Whether an integrator's samples of a row splat into that row only.
-bool samplesStayInTheirRow(Integrator integrator);
-
 class PassFilm {
  public:
   // `tallySize`: per-pixel counts kept beside the film (erpt's proposal filter), or 0; `workers`:

@@ -56,7 +56,7 @@ uint64_t Renderer::samples() const {
   return n;
 }
 
-void Renderer::renderRow(uint64_t sampleIndex, int row, Film& film) {
+void Renderer::renderRow(RowEstimator estimator, uint64_t sampleIndex, int row, Film& film) {
   RowWorker& worker = *workers_.at(size_t(currentWorker()));
   auto& sources = worker.sources;
   auto& samples = worker.samples;
@@ -72,7 +72,7 @@ void Renderer::renderRow(uint64_t sampleIndex, int row, Film& film) {
       pos[i] = positionInPixel(x0 + i, row, jitter);
       samples[i].clear();
     }
-    if (settings_.integrator == Integrator::PathTracing) {
+    if (estimator == RowEstimator::PathTracing) {
       // Neighbouring pixels together: their camera and first shadow rays trace as packets.
       tracePaths(*ctx_, m, pos, worker.sourcePointers.data(), samples.data());
     } else {

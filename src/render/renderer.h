@@ -14,6 +14,10 @@
 
 namespace relt {
 
+// How renderRow estimates a pixel sample: a path traced from the camera (pixels of a row in
+// packets), or bidirectionally (light subpaths connected to it, splatting anywhere).
+enum class RowEstimator : uint8_t { PathTracing, Bidirectional };
+
 class Renderer {
  public:
   // Takes a loaded scene; throws InputError if it cannot be rendered with these settings.
@@ -29,7 +33,7 @@ class Renderer {
   // One unit of work: sample `sampleIndex` of every pixel of row `row`. Each pixel sample has its
   // own random stream keyed by (seed, pixel, sample index). Worker threads of the rank
   // (settings().threads, parallel/workers.h) may render rows at once, each into a film of its own.
-  void renderRow(uint64_t sampleIndex, int row, Film& film);
+  void renderRow(RowEstimator estimator, uint64_t sampleIndex, int row, Film& film);
   // The directly seen emission (paths of one segment) of rows firstRow, firstRow + rowStride, ...:
   // camera rays number begin .. end - 1 of every pixel, at the points of a shifted (0,2)-sequence,
   // on streams of their own; after rays 0 .. N - 1, resolve with divisor N (render/direct_pass.h

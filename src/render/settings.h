@@ -14,12 +14,20 @@
 
 namespace relt {
 
-enum class Integrator : uint8_t { PathTracing, Bdpt, Pssmlt, Mmlt, Erpt, Relt };
+constexpr const char* kDefaultIntegrator = "bdpt";
 
-// The integrators whose budget is mutations per pixel and that render in rounds.
-inline bool isMarkovChain(Integrator i) {
-  return i == Integrator::Pssmlt || i == Integrator::Mmlt || i == Integrator::Relt;
-}
+struct RenderSettings;
+
+// What the renderer needs to know of the integrator a render uses; each integrator's folder fills
+// it in (src/integrators/registry.h), and only there are integrators told apart.
+// Default-constructed it is the default integrator's (bdpt has no settings of its own).
+struct IntegratorKind {
+  std::string name = kDefaultIntegrator;
+  // Can estimate the directly seen emission (paths of one segment) in a pass apart (directSpp).
+  bool directEmissionApart = false;
+  // Adds its own settings to toJson's (stats.json, the EXR metadata, the checkpoints' identity).
+  void (*settingsJson)(const RenderSettings& settings, nlohmann::json& j) = nullptr;
+};
 
 constexpr int kDirectSppAuto = -1;
 constexpr int kDefaultSpp = 16;  // pt, bdpt, erpt when neither --spp nor --time is given
@@ -30,7 +38,7 @@ struct RenderSettings {
   std::string png;                // optional preview
   std::string stats;              // optional stats.json
   std::string trace;              // relt, optional: every rank's stepping time of each group round (JSON)
-  Integrator integrator = Integrator::Bdpt;
+  IntegratorKind integrator;
   std::optional<int> spp;         // samples per pixel (default when neither spp nor time: kDefaultSpp)
   std::optional<double> seconds;  // time budget
   int width = 0, height = 0;      // resolved (scene extras unless overridden)
@@ -60,11 +68,11 @@ struct RenderSettings {
   nlohmann::json toJson() const;
 };
 
-const char* integratorName(Integrator i);
 // pssmlt and relt unless directSpp is 0: paths of one segment are estimated apart, not by the chains.
-inline bool directEmissionApart(const RenderSettings& s) {
-  return s.directSpp != 0 && (s.integrator == Integrator::Pssmlt || s.integrator == Integrator::Relt);
-}
+inline bool directEmissionApart(const RenderSettings& s) { return s.directSpp != 0 && s.integrator.directEmissionApart; }
+// A float setting as the number it was given as (0.3, not 0.30000001192092896): the shortest
+// decimal that reads back as the same float.
+double shortestDecimal(float v);
 // relt's settings with the chain options that apply to every Markov-chain integrator filled in
 // (Kelemen sizes, large-step probability).
 ReplicaSettings effectiveReplicaSettings(const RenderSettings& s);

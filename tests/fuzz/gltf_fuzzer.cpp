@@ -45,10 +45,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     settings.width = 8;
     settings.height = 8;
     settings.maxDepth = 4;
-    settings.integrator = relt::Integrator::Bdpt;
     relt::Renderer renderer(std::move(scene), settings);
     relt::Film film(settings.width, settings.height);
-    renderer.renderRow(0, 3, film);
+    renderer.renderRow(relt::RowEstimator::Bidirectional, 0, 3, film);
     for (double v : film.data())
       if (!std::isfinite(v)) std::abort();  // non-finite samples must be dropped, never splatted
   } catch (const relt::InputError&) {

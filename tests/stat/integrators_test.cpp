@@ -9,6 +9,7 @@
 #include "render_fixture.h"
 #include "scene/gltf_loader.h"
 #include "test_support.h"
+#include "integrators/registry.h"
 
 using namespace relt;
 using namespace relt::test;
@@ -16,11 +17,11 @@ using namespace relt::test;
 namespace {
 
 // spp doubles as mutations per pixel for the Markov-chain integrators.
-RenderSettings settingsFor(Integrator integrator, uint64_t seed, int spp, int size) {
+RenderSettings settingsFor(const std::string& integrator, uint64_t seed, int spp, int size) {
   RenderSettings s;
-  s.integrator = integrator;
+  selectIntegrator(s, integrator);
   s.seed = seed;
-  if (isMarkovChain(integrator)) {
+  if (!unusedOptionReason("--mutations-per-pixel", *findIntegrator(integrator))) {  // its budget is mutations
     s.mutationsPerPixel = spp;
     s.chains = 64;
     s.replica.ladders = 8;
@@ -31,7 +32,7 @@ RenderSettings settingsFor(Integrator integrator, uint64_t seed, int spp, int si
   return s;
 }
 
-class IntegratorTest : public ::testing::TestWithParam<Integrator> {};
+class IntegratorTest : public ::testing::TestWithParam<std::string> {};
 
 // Closed sphere, emission Le and albedo a everywhere, camera inside: with at most D segments every
 // pixel is Le (1 - a^D) / (1 - a) (scenes/README.md).
@@ -55,15 +56,15 @@ TEST_P(IntegratorTest, FurnaceMatchesAnalyticValueWithinOnePercent) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllIntegrators, IntegratorTest,
-                         ::testing::Values(Integrator::PathTracing, Integrator::Bdpt, Integrator::Pssmlt,
-                                           Integrator::Mmlt, Integrator::Erpt, Integrator::Relt),
-                         [](const auto& info) { return std::string(integratorName(info.param)); });
+                         ::testing::Values("pt", "bdpt", "pssmlt",
+                                           "mmlt", "erpt", "relt"),
+                         [](const auto& info) { return info.param; });
 
 // Two integrators estimate the same image: the mean and four regions agree within 4 standard
 // errors, the errors coming from independent seeds (fixed, so the test is deterministic). Markov
 // chain images have heavy-tailed errors (a chain that finds a bright path late), so their standard
 // errors are estimated from 20 seeds rather than 10.
-static void expectAgreement(const Scene& scene, Integrator first, Integrator second, int spp, int seeds,
+static void expectAgreement(const Scene& scene, const std::string& first, const std::string& second, int spp, int seeds,
                             const std::function<void(RenderSettings&)>& tweak = {}) {
   const int size = 48;
   struct Region {
@@ -76,7 +77,7 @@ static void expectAgreement(const Scene& scene, Integrator first, Integrator sec
                             {"bottom-left", 0, size / 2, size / 2, size},
                             {"bottom-right", size / 2, size / 2, size, size}};
   std::vector<double> values[2][5];
-  const Integrator integrators[2] = {first, second};
+  const std::string integrators[2] = {first, second};
   for (int i = 0; i < 2; ++i)
     for (int k = 0; k < seeds; ++k) {
       RenderSettings settings = settingsFor(integrators[i], 1000 * (i + 1) + k, spp, size);
@@ -91,12 +92,12 @@ static void expectAgreement(const Scene& scene, Integrator first, Integrator sec
     const double sigma = std::sqrt(a.stderror * a.stderror + b.stderror * b.stderror);
     EXPECT_GT(a.mean, 0.0);
     EXPECT_LT(std::abs(a.mean - b.mean), 4.0 * sigma)
-        << regions[r].name << ": " << integratorName(first) << " " << a.mean << " +- " << a.stderror << ", "
-        << integratorName(second) << " " << b.mean << " +- " << b.stderror;
+        << regions[r].name << ": " << first << " " << a.mean << " +- " << a.stderror << ", "
+        << second << " " << b.mean << " +- " << b.stderror;
   }
 }
 
-static void expectAgreementOnCornellBox(Integrator first, Integrator second, int spp, int seeds,
+static void expectAgreementOnCornellBox(const std::string& first, const std::string& second, int spp, int seeds,
                                         const std::function<void(RenderSettings&)>& tweak = {}) {
   expectAgreement(loadGltf(sourcePath("scenes/cornell-box.gltf")), first, second, spp, seeds, tweak);
 }
@@ -105,12 +106,12 @@ static void expectAgreementOnCornellBox(Integrator first, Integrator second, int
 // auto); every other test of them here runs that way. Here the chains do it all, as with 0.
 TEST(IntegratorAgreement, PssmltAndReltWithTheChainsDoingItAllAgreeWithBdptOnCornellBox) {
   const auto chainsOnly = [](RenderSettings& s) { s.directSpp = 0; };
-  expectAgreementOnCornellBox(Integrator::Pssmlt, Integrator::Bdpt, 16, 20, chainsOnly);
-  expectAgreementOnCornellBox(Integrator::Relt, Integrator::Bdpt, 16, 20, chainsOnly);
+  expectAgreementOnCornellBox("pssmlt", "bdpt", 16, 20, chainsOnly);
+  expectAgreementOnCornellBox("relt", "bdpt", 16, 20, chainsOnly);
 }
 
 TEST(DirectEmission, ChainsDoingItAllMatchTheFurnaceWithinOnePercent) {
-  for (Integrator integrator : {Integrator::Pssmlt, Integrator::Relt}) {
+  for (const std::string& integrator : {"pssmlt", "relt"}) {
     RenderSettings s = settingsFor(integrator, 7, 16, 32);
     s.directSpp = 0;
     expectFurnaceWithinOnePercent(s);
@@ -118,42 +119,42 @@ TEST(DirectEmission, ChainsDoingItAllMatchTheFurnaceWithinOnePercent) {
 }
 
 TEST(IntegratorAgreement, PtAndBdptAgreeOnCornellBox) {
-  expectAgreementOnCornellBox(Integrator::PathTracing, Integrator::Bdpt, 16, 10);
+  expectAgreementOnCornellBox("pt", "bdpt", 16, 10);
 }
 
 TEST(IntegratorAgreement, PssmltAndBdptAgreeOnCornellBox) {
-  expectAgreementOnCornellBox(Integrator::Pssmlt, Integrator::Bdpt, 16, 20);
+  expectAgreementOnCornellBox("pssmlt", "bdpt", 16, 20);
 }
 
 TEST(IntegratorAgreement, ErptAndBdptAgreeOnCornellBox) {
   // erpt: 2 seeds per pixel, each redistributed by about 100 mutations.
-  expectAgreementOnCornellBox(Integrator::Erpt, Integrator::Bdpt, 2, 20);
+  expectAgreementOnCornellBox("erpt", "bdpt", 2, 20);
 }
 
 TEST(IntegratorAgreement, MmltAndBdptAgreeOnCornellBox) {
-  expectAgreementOnCornellBox(Integrator::Mmlt, Integrator::Bdpt, 64, 20);
+  expectAgreementOnCornellBox("mmlt", "bdpt", 64, 20);
 }
 
 // Replica exchange: both families with the default exchange (deo), kitaoka with permutations,
 // relaxed with population annealing.
 TEST(IntegratorAgreement, ReltRelaxedAndBdptAgreeOnCornellBox) {
-  expectAgreementOnCornellBox(Integrator::Relt, Integrator::Bdpt, 16, 20,
+  expectAgreementOnCornellBox("relt", "bdpt", 16, 20,
                               [](RenderSettings& s) { s.replica.family.kind = FamilyKind::Relaxed; });
 }
 
 TEST(IntegratorAgreement, ReltDefaultAndBdptAgreeOnCornellBox) {  // kitaoka, deo
-  expectAgreementOnCornellBox(Integrator::Relt, Integrator::Bdpt, 16, 20);
+  expectAgreementOnCornellBox("relt", "bdpt", 16, 20);
 }
 
 TEST(IntegratorAgreement, ReltKitaokaWithPermutationsAndBdptAgreeOnCornellBox) {
-  expectAgreementOnCornellBox(Integrator::Relt, Integrator::Bdpt, 16, 20, [](RenderSettings& s) {
+  expectAgreementOnCornellBox("relt", "bdpt", 16, 20, [](RenderSettings& s) {
     s.replica.family.kind = FamilyKind::Kitaoka;
     s.replica.exchange.move = ExchangeMove::Permutation;
   });
 }
 
 TEST(IntegratorAgreement, ReltRelaxedWithPopulationAnnealingAndBdptAgreeOnCornellBox) {
-  expectAgreementOnCornellBox(Integrator::Relt, Integrator::Bdpt, 16, 20, [](RenderSettings& s) {
+  expectAgreementOnCornellBox("relt", "bdpt", 16, 20, [](RenderSettings& s) {
     s.replica.family.kind = FamilyKind::Relaxed;
     s.replica.init = InitKind::Annealing;
     s.replica.annealing.particles = 1024;
@@ -161,18 +162,18 @@ TEST(IntegratorAgreement, ReltRelaxedWithPopulationAnnealingAndBdptAgreeOnCornel
 }
 
 TEST(IntegratorAgreement, ReltTemperedAndBdptAgreeOnCornellBox) {
-  expectAgreementOnCornellBox(Integrator::Relt, Integrator::Bdpt, 16, 20,
+  expectAgreementOnCornellBox("relt", "bdpt", 16, 20,
                               [](RenderSettings& s) { s.replica.family.kind = FamilyKind::Tempered; });
 }
 
 TEST(IntegratorAgreement, ReltTemperedAndBdptAgreeOnGlossyRing) {
-  expectAgreement(glossyRing(), Integrator::Relt, Integrator::Bdpt, 16, 20,
+  expectAgreement(glossyRing(), "relt", "bdpt", 16, 20,
                   [](RenderSettings& s) { s.replica.family.kind = FamilyKind::Tempered; });
 }
 
 // With regularisation no level targets I itself: the MIS over levels must still be unbiased.
 TEST(IntegratorAgreement, ReltTemperedWithRegularisationAndBdptAgreeOnGlossyRing) {
-  expectAgreement(glossyRing(), Integrator::Relt, Integrator::Bdpt, 16, 20, [](RenderSettings& s) {
+  expectAgreement(glossyRing(), "relt", "bdpt", 16, 20, [](RenderSettings& s) {
     s.replica.family.kind = FamilyKind::Tempered;
     s.replica.family.regularisation = 0.1;
     s.replica.family.regularisationDecay = 0.1;  // fast enough to move during the test's render
@@ -181,13 +182,13 @@ TEST(IntegratorAgreement, ReltTemperedWithRegularisationAndBdptAgreeOnGlossyRing
 
 // (The parameterised furnace test above runs relt's default, kitaoka.)
 TEST(ReltFurnace, RelaxedFamilyMatchesAnalyticValueWithinOnePercent) {
-  RenderSettings s = settingsFor(Integrator::Relt, 7, 16, 32);
+  RenderSettings s = settingsFor("relt", 7, 16, 32);
   s.replica.family.kind = FamilyKind::Relaxed;
   expectFurnaceWithinOnePercent(s);
 }
 
 TEST(ReltFurnace, TemperedFamilyMatchesAnalyticValueWithinOnePercent) {
-  RenderSettings s = settingsFor(Integrator::Relt, 7, 16, 32);
+  RenderSettings s = settingsFor("relt", 7, 16, 32);
   s.replica.family.kind = FamilyKind::Tempered;
   expectFurnaceWithinOnePercent(s);
 }
@@ -203,7 +204,7 @@ TEST(MmltFurnace, DeepMaxDepthWithFewChainsPerLengthMatchesAnalyticValue) {
   const double expected = furnaceValue(200);
   std::vector<double> means;
   for (uint64_t seed : {1, 2, 3, 4}) {
-    RenderSettings s = settingsFor(Integrator::Mmlt, seed, 64, 32);
+    RenderSettings s = settingsFor("mmlt", seed, 64, 32);
     s.chains = 256;  // one or two chains for most of the 144 lengths with a target
     s.maxDepth = 200;
     const Image image = renderInProcess(path, s);
@@ -220,7 +221,7 @@ TEST(MmltFurnace, DeepMaxDepthWithFewChainsPerLengthMatchesAnalyticValue) {
 // lengths' normalisers, so one seed shows it.
 TEST(MmltFurnace, ABudgetBelowTheChainCountKeepsEveryLength) {
   for (uint64_t seed : {1, 2}) {
-    RenderSettings s = settingsFor(Integrator::Mmlt, seed, 1, 8);
+    RenderSettings s = settingsFor("mmlt", seed, 1, 8);
     s.chains = 256;
     const Image image = renderInProcess(sourcePath("scenes/furnace.gltf"), s);
     EXPECT_NEAR(image.mean(), furnaceValue(8), 0.01 * furnaceValue(8)) << "seed " << seed;

@@ -1,6 +1,7 @@
 #pragma once
 // One in-process fixture through which every integrator test renders: load a scene, render it
-// with given settings on this process alone, return the image (pixel values).
+// with given settings on this process alone through the executable's own code (the registry's
+// integrator, runRender's outputs, a LocalJob), return the image (pixel values).
 #include <string>
 #include <vector>
 

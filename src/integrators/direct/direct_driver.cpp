@@ -80,7 +80,7 @@ struct PassSaver {
     CheckpointPlan p = plan;
     p.directFilm = &out.film;
     p.direct = directProgress(sofar.spp, sofar.seconds, false, out.dropped + job.allreduceSum(out.film.droppedSamples()));
-    saveCheckpoint(job, p, integratorName(settings.integrator), {{"phase", "direct"}}, {}, {});
+    saveCheckpoint(job, p, settings.integrator.name.c_str(), {{"phase", "direct"}}, {}, {});
   }
 };
 

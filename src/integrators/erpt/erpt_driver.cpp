@@ -80,7 +80,8 @@ Image imageSoFar(Job& job, const PassFilm& film, PassPoint at) {
 
 PassFilm erptFilm(const RenderSettings& settings) {
   const size_t pixels = size_t(settings.width) * settings.height;
-  return PassFilm(settings.width, settings.height, samplesStayInTheirRow(Integrator::Erpt),
+  // A chain wanders out of its seed's row: the rows of a pass do not stand alone.
+  return PassFilm(settings.width, settings.height, false,
                   settings.erptProposalFilter ? pixels : 0, settings.threads);
 }
 

@@ -57,7 +57,7 @@ std::vector<double> restoredTargets(const Resumed& resumed, std::vector<std::vec
 // round loop that runs them (collective).
 class ChainRender {
  public:
-  ChainRender(Job& job, Renderer& renderer, const RenderSettings& settings, Film& film,
+  ChainRender(Job& job, Renderer& renderer, const RenderSettings& settings, ChainKind kind, Film& film,
               const CheckpointPlan& plan, const Resumed* resumed);
   // Rounds until the budget is spent or the ranks agree to stop; snapshots and checkpoints between.
   void loop(const SnapshotWriter& snapshot);
@@ -89,14 +89,14 @@ class ChainRender {
   double elapsed_ = 0.0;  // the agreed seconds of chain rendering, over all sittings
 };
 
-ChainRender::ChainRender(Job& job, Renderer& renderer, const RenderSettings& settings, Film& film,
+ChainRender::ChainRender(Job& job, Renderer& renderer, const RenderSettings& settings, ChainKind kind, Film& film,
                          const CheckpointPlan& plan, const Resumed* resumed)
     : job_(job),
       settings_(settings),
       film_(film),
       plan_(plan),
       ps_(pssmltSettings(settings)),
-      mmlt_(settings.integrator == Integrator::Mmlt),
+      mmlt_(kind == ChainKind::Mmlt),
       area_(double(settings.width) * settings.height),
       eval_(mmlt_ ? 0 : settings.threads, renderer.context(), settings.width, settings.height),
       mmltEval_(mmlt_ ? settings.threads : 0, renderer.context(), settings.width, settings.height),
@@ -172,7 +172,7 @@ void ChainRender::writeCheckpoint(double elapsed) {
   for (const Film& f : pool_.depthFilms(film_.width(), film_.height())) films.push_back(f);
   const nlohmann::json progress = {
       {"rounds", rounds_}, {"elapsed", elapsed}, {"mutations", schedule_.mutationsAfter(rounds_)}};
-  saveCheckpoint(job_, plan_, integratorName(settings_.integrator), progress, films,
+  saveCheckpoint(job_, plan_, settings_.integrator.name.c_str(), progress, films,
                  checkpointPart(job_.isRoot(), targets_, pool_));
 }
 
@@ -236,9 +236,9 @@ ChainCounters sumOverRanks(Job& job, const ChainCounters& c) {
   return s;
 }
 
-PssmltOutcome runPssmlt(Job& job, Renderer& renderer, const RenderSettings& settings, Film& film,
+PssmltOutcome runPssmlt(Job& job, Renderer& renderer, const RenderSettings& settings, ChainKind kind, Film& film,
                         const SnapshotWriter& snapshot, const CheckpointPlan& plan, const Resumed* resumed) {
-  ChainRender render(job, renderer, settings, film, plan, resumed);
+  ChainRender render(job, renderer, settings, kind, film, plan, resumed);
   render.loop(snapshot);
   return render.outcome();
 }

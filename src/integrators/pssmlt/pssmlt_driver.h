@@ -26,11 +26,14 @@ ChainCounters sumOverRanks(Job& job, const ChainCounters& c);
 // Root only: writes the image so far, given reduced film sums and the divisor for resolve().
 using SnapshotWriter = std::function<void(const std::vector<double>& sums, double divisor)>;
 
+// pssmlt: a chain's state is a bdpt sample of any length; mmlt: of one length and strategy.
+enum class ChainKind : uint8_t { Pssmlt, Mmlt };
+
 // Runs every chain this rank owns into `film` (not yet reduced), pssmlt or mmlt; collective.
 // --time stops at a round boundary all ranks agree on; --snapshot-every calls `snapshot`;
 // `plan` writes checkpoints; a render resumed from `resumed` (or null) continues it without
 // running the bootstrap again (its targets are in the checkpoint).
-PssmltOutcome runPssmlt(Job& job, Renderer& renderer, const RenderSettings& settings, Film& film,
+PssmltOutcome runPssmlt(Job& job, Renderer& renderer, const RenderSettings& settings, ChainKind kind, Film& film,
                         const SnapshotWriter& snapshot, const CheckpointPlan& plan = {},
                         const Resumed* resumed = nullptr);
 

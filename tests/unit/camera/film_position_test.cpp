@@ -36,7 +36,6 @@ TEST(FilmPosition, AnOffsetBelowOneStaysOnItsPixel) {
 // ones black. At 1024 x 768 about 24 of these samples round into the next row without the clamp.
 TEST(FilmPosition, APtRowSplatsIntoThatRowOnly) {
   RenderSettings settings;
-  settings.integrator = Integrator::PathTracing;
   settings.width = 1024;
   settings.height = 768;
   settings.maxDepth = 2;  // the furnace's light on every pixel, seen or reflected once
@@ -44,7 +43,7 @@ TEST(FilmPosition, APtRowSplatsIntoThatRowOnly) {
   Renderer renderer(loadGltf(test::sourcePath("scenes/furnace.gltf")), settings);
   Film film(settings.width, settings.height);
   for (uint64_t pass = 0; pass < 4; ++pass)
-    for (int row = 0; row < settings.height; row += 2) renderer.renderRow(pass, row, film);
+    for (int row = 0; row < settings.height; row += 2) renderer.renderRow(RowEstimator::PathTracing, pass, row, film);
   const size_t rowSize = size_t(3) * settings.width;
   int litEven = 0, litOdd = 0;
   for (int row = 0; row < settings.height; ++row)

@@ -10,6 +10,7 @@
 #include "core/words.h"
 #include "replica/replica_schedule.h"
 #include "test_support.h"
+#include "integrators/registry.h"
 
 using namespace relt;
 
@@ -112,7 +113,7 @@ TEST(CheckpointFile, AByteHashedCheckpointStillReadsAndEveryWordIsChecked) {
 
 TEST(CheckpointFile, TheIdentityIgnoresBudgetsAndOutputsButNotWhatShapesTheImage) {
   RenderSettings a;
-  a.integrator = Integrator::Relt;
+  selectIntegrator(a, "relt");
   a.width = 40;
   a.height = 30;
   a.output = "a.exr";

@@ -8,14 +8,15 @@
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "test_support.h"
+#include "integrators/registry.h"
 
 using namespace relt;
 
 namespace {
 
-RenderSettings small(Integrator integrator) {
+RenderSettings small(const std::string& integrator) {
   RenderSettings s;
-  s.integrator = integrator;
+  selectIntegrator(s, integrator);
   s.scenePath = test::sourcePath("scenes/cornell-box.gltf");
   s.width = 16;
   s.height = 12;
@@ -41,7 +42,7 @@ void expectSame(const ChainCounters& a, const ChainCounters& b) {
 }  // namespace
 
 TEST(ChainCheckpoint, ARestoredChainContinuesBitForBit) {
-  Renderer renderer(loadGltf(small(Integrator::Pssmlt).scenePath), small(Integrator::Pssmlt));
+  Renderer renderer(loadGltf(small("pssmlt").scenePath), small("pssmlt"));
   PssEvaluator eval(renderer.context(), 16, 12);
   PssmltSettings settings;
   const std::vector<double> targets = bootstrapTargets(eval, 7, 1000, 0, 1);
@@ -64,7 +65,7 @@ TEST(ChainCheckpoint, ARestoredChainContinuesBitForBit) {
 // mmlt with a stratified plan (a film per depth): chains written by two "ranks" (even and odd ids)
 // and restored into one pool continue as the pool that ran them all.
 TEST(ChainCheckpoint, ChainPoolPartsRestoreIntoAnyOwnership) {
-  const RenderSettings s = small(Integrator::Mmlt);
+  const RenderSettings s = small("mmlt");
   Renderer renderer(loadGltf(s.scenePath), s);
   PerWorker<MmltEvaluator> eval(1, renderer.context(), 16, 12);
   PssmltSettings settings;

@@ -11,6 +11,7 @@
 #include "scene/gltf_loader.h"
 #include "test_support.h"
 #include "../scene/gltf_test_support.h"
+#include "integrators/registry.h"
 
 using namespace relt;
 
@@ -18,7 +19,7 @@ namespace {
 
 RenderSettings small(int directSpp) {
   RenderSettings s;
-  s.integrator = Integrator::Pssmlt;
+  selectIntegrator(s, "pssmlt");
   s.width = 12;
   s.height = 10;
   s.seed = 5;

@@ -14,11 +14,6 @@ void splat(PassFilm& film, double value) {
 
 }  // namespace
 
-TEST(PassFilm, OnlyPathTracingsRowsStandAlone) {
-  EXPECT_TRUE(samplesStayInTheirRow(Integrator::PathTracing));
-  for (Integrator i : {Integrator::Bdpt, Integrator::Erpt}) EXPECT_FALSE(samplesStayInTheirRow(i));
-}
-
 TEST(PassFilm, RowsThatStandAloneShowTheLiveSumsEverywhere) {
   PassFilm film(2, 2, true);
   splat(film, 1.0);

@@ -13,6 +13,7 @@
 #include "replica/round_loop.h"
 #include "scene/gltf_loader.h"
 #include "test_support.h"
+#include "integrators/registry.h"
 
 using namespace relt;
 
@@ -21,7 +22,7 @@ namespace {
 struct Fixture {
   explicit Fixture(const char* scene = "scenes/cornell-box.gltf", int width = 16, int height = 12) {
     RenderSettings s;
-    s.integrator = Integrator::Relt;
+    selectIntegrator(s, "relt");
     s.width = width;
     s.height = height;
     renderer = std::make_unique<Renderer>(loadGltf(test::sourcePath(scene)), s);
