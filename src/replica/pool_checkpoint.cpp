@@ -65,15 +65,16 @@ std::vector<uint64_t> ReplicaPool::checkpointPart() const {
   for (uint64_t v : {kPartVersion, uint64_t(m), uint64_t(groups()), uint64_t(chainCount()),
                      uint64_t(settings_.normaliserLag), uint64_t(localDecisions())})
     w.u64(v);
+  const NormaliserLedger::State ledger = ledger_.state();
   w.f64(meanTarget_);
-  w.f64(bootstrapSamples_);
+  w.f64(ledger.bootstrapSamples);
   w.u64(stepsPerChain_);
-  w.u64(epoch_);
+  w.u64(ledger.epoch);
   w.f64(family_.regularisationFloor());
-  w.f64s(bootstrapSum_);  // emptied when the regularisation moves
-  w.f64(bootstrapCount_);
-  w.f64s(largeSum_);
-  w.f64(largeCount_);
+  w.f64s(ledger.bootstrapSum);  // emptied when the regularisation moves
+  w.f64(ledger.bootstrapCount);
+  w.f64s(ledger.largeSum);
+  w.f64(ledger.largeCount);
   w.f64s(estimator_.normalisers());
   writeTally(w, tally_);
   w.u64(trips_.total());
@@ -112,26 +113,24 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
                        uint64_t(settings_.normaliserLag)})
       if (in.u64() != v) throw std::runtime_error("the checkpoint's ladders are not this render's");
     const bool local = in.u64() != 0;
-    const double meanTarget = in.f64(), bootstrapSamples = in.f64();
+    NormaliserLedger::State ledger;
+    const double meanTarget = in.f64();
+    ledger.bootstrapSamples = in.f64();
     if (meanTarget != meanTarget_) throw std::runtime_error("the checkpoint's bootstrap is not this pool's");
-    const uint64_t steps = in.u64(), epoch = in.u64();
+    const uint64_t steps = in.u64();
+    ledger.epoch = in.u64();
     const double floor = in.f64();
-    std::vector<double> bootstrapSum = in.f64s(size_t(m));
-    const double bootstrapCount = in.f64();
-    std::vector<double> largeSum = in.f64s(size_t(m));
-    const double largeCount = in.f64();
+    ledger.bootstrapSum = in.f64s(size_t(m));
+    ledger.bootstrapCount = in.f64();
+    ledger.largeSum = in.f64s(size_t(m));
+    ledger.largeCount = in.f64();
     const std::vector<double> b = in.f64s(size_t(m));
     const ExchangeTally t = readTally(in, m);
     const uint64_t partTrips = in.u64();
     if (r == 0) {  // the same on every rank
-      bootstrapSamples_ = bootstrapSamples;
       stepsPerChain_ = steps;
-      epoch_ = epoch;
       family_.restoreRegularisationFloor(float(floor));
-      bootstrapSum_ = std::move(bootstrapSum);
-      bootstrapCount_ = bootstrapCount;
-      largeSum_ = std::move(largeSum);
-      largeCount_ = largeCount;
+      ledger_.restore(std::move(ledger));
       estimator_.setNormalisers(b);
     }
     // Tallies and trips: each rank's own ladders with local decisions, otherwise all on every rank.

@@ -43,14 +43,14 @@ ReplicaPool::ReplicaPool(PerWorker<PssEvaluator>& evals, const ReplicaSettings& 
       family_(settings.family, meanTarget),
       estimator_(family_, settings.beta),
       placement_(resolvePlacement(settings.placement, settings.ladders, ranks)),
+      windows_(roundGroups(settings.ladders), ranks, settings.balanceWindow),
       departed_(size_t(family_.levels())),
+      ledger_(family_.levels()),
       tally_(family_.levels()),
       trips_(settings.ladders * family_.levels(), family_.levels()) {
   const int m = levels();
   for (int w = 0; w < evals.size(); ++w) evaluators_.emplace_back(evals[w], family_);
   meanTarget_ = meanTarget;
-  bootstrapSum_.assign(size_t(m), 0.0);
-  largeSum_.assign(size_t(m), 0.0);
   if (settings.normaliserLag < 1) throw std::invalid_argument("the normaliser lag must be at least 1 round");
   pendingLarge_.assign(size_t(roundGroups(settings.ladders)), LargeStepSums(m));  // defines groups()
   posted_.resize(size_t(groups()));
@@ -59,11 +59,6 @@ ReplicaPool::ReplicaPool(PerWorker<PssEvaluator>& evals, const ReplicaSettings& 
   epochRead_.assign(size_t(groups()), 1);  // epoch 0: the bootstrap describes the targets
   placementVersion_.assign(size_t(groups()), 0);
   readBackCount_.assign(size_t(groups()), 0);
-  windowSeconds_.assign(size_t(groups()), std::vector<double>(size_t(ranks), 0.0));
-  windowSquares_ = windowSeconds_;
-  windowRounds_.assign(size_t(groups()), 0.0);
-  balanceDecisions_.assign(size_t(groups()), 0);
-  windowSpan_.assign(size_t(groups()), 1.0);
   epochOf_.assign(size_t(chainCount()), 0);
   levelOf_.resize(size_t(chainCount()));
   for (int c = 0; c < chainCount(); ++c) {
@@ -87,20 +82,18 @@ void ReplicaPool::startFromBootstrap(const std::vector<double>& bootstrap) {
   std::vector<double> qi(static_cast<size_t>(m));
   for (size_t i = 0; i < samples; ++i) {
     family_.targets(bootstrap.data() + i * features, qi.data());
-    for (int k = 0; k < m; ++k) {
-      q[size_t(k)][i] = qi[size_t(k)];
-      bootstrapSum_[size_t(k)] += qi[size_t(k)];
-    }
+    for (int k = 0; k < m; ++k) q[size_t(k)][i] = qi[size_t(k)];
+    ledger_.addBootstrapSample(qi.data());
   }
-  bootstrapCount_ = bootstrapSamples_ = double(samples);
+  ledger_.bootstrapDone(double(samples));
   std::vector<double> b(static_cast<size_t>(m));
-  for (int k = 0; k < m; ++k) b[size_t(k)] = samples ? bootstrapSum_[size_t(k)] / double(samples) : 0.0;
+  for (int k = 0; k < m; ++k) b[size_t(k)] = samples ? ledger_.bootstrapSum(k) / double(samples) : 0.0;
   estimator_.setNormalisers(b);
   if (!active_) return;
   std::vector<Distribution1D> start;
   for (int k = 0; k < m; ++k) {
     // A level whose target the bootstrap never saw starts anywhere (its chain wanders to q > 0).
-    start.emplace_back(bootstrapSum_[size_t(k)] > 0.0 ? q[size_t(k)] : std::vector<double>(samples, 1.0));
+    start.emplace_back(ledger_.bootstrapSum(k) > 0.0 ? q[size_t(k)] : std::vector<double>(samples, 1.0));
   }
   std::vector<std::vector<StreamValues>> annealed;
   if (settings_.init == InitKind::Annealing)
@@ -132,12 +125,8 @@ void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films, 
   // steps taken under the new targets (sums of the old ones would bias them).
   if (group == 0) {
     if (family_.setRegularisationStep(stepsPerChain_)) {
-      ++epoch_;
+      ledger_.targetsMoved();
       epochRead_.assign(epochRead_.size(), 0);
-      bootstrapSum_.assign(bootstrapSum_.size(), 0.0);
-      bootstrapCount_ = 0.0;
-      largeSum_.assign(largeSum_.size(), 0.0);
-      largeCount_ = 0.0;
     }
     stepsPerChain_ += steps;
   }
@@ -167,9 +156,9 @@ void ReplicaPool::stepChain(size_t i, uint64_t steps, int worker, std::vector<Fi
   const int c = hosted()[i];
   ReplicaChain& chain = chains_[i];
   const LevelEvaluator& eval = evaluators_[size_t(worker)];
-  if (epochOf_[size_t(c)] != epoch_) {
+  if (epochOf_[size_t(c)] != ledger_.epoch()) {
     chain.refresh(eval);
-    epochOf_[size_t(c)] = epoch_;
+    epochOf_[size_t(c)] = ledger_.epoch();
   }
   Film& film = films.size() > 1 ? films[size_t(chain.level())] : films[0];
   chain.run(steps, eval, estimator_, film, large);
@@ -211,7 +200,7 @@ std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double 
   tail.save = save;
   tail.elapsed = elapsed;
   appendRoundTail(tail, msg);
-  posted_[size_t(group)].push_back({large, epoch_, placementVersion_[size_t(group)]});
+  posted_[size_t(group)].push_back({large, ledger_.epoch(), placementVersion_[size_t(group)]});
   large = LargeStepSums(levels());
   return msg;
 }
@@ -244,8 +233,8 @@ size_t ReplicaPool::dueReadBacks(int group, uint64_t round) const {
   // targets have a bootstrap's worth of large steps: with the lag the normalisers would rest on the
   // first round read back for lag rounds, and for the whole render when the moves come faster than
   // the lag (decay above about 0.085).
-  const bool few = epoch_ > 0 && largeCount_ < bootstrapSamples_;
-  if ((few || !epochRead_[size_t(group)]) && n > 0 && rounds.back().epoch == epoch_) return n;
+  const bool few = ledger_.fewSamplesSinceMove();
+  if ((few || !epochRead_[size_t(group)]) && n > 0 && rounds.back().epoch == ledger_.epoch()) return n;
   return n >= lag ? n - lag + 1 : 0;
 }
 
@@ -279,35 +268,13 @@ RoundAgreement ReplicaPool::finishRound(int group, const std::vector<std::vector
 
   // Normalisers from the bootstrap and every large step read back so far, frozen until the next
   // finished round (no samples since the regularisation moved: the previous ones stay).
-  const double n = bootstrapCount_ + largeCount_;
-  if (n > 0.0) {
-    std::vector<double> b(static_cast<size_t>(m));
-    for (int k = 0; k < m; ++k) b[size_t(k)] = (bootstrapSum_[size_t(k)] + largeSum_[size_t(k)]) / n;
-    estimator_.setNormalisers(b);
-  }
+  if (const auto b = ledger_.normalisers()) estimator_.setNormalisers(*b);
 
-  // The group's placement from the speeds measured since its last decision, once the slowest rank
-  // has stepped it for a window long enough that timing noise is small; a gain that the window's
-  // own noise could explain (noiseGain, 1 % to 10 %) moves nothing. The first windows are 1/8, 1/4
-  // and 1/2 of it: an uneven start costs less. A decision that moves nothing keeps measuring, its
-  // window doubled, up to 8 windows: the noise falls as 1 / sqrt(rounds), so an imbalance too small
-  // for one window is still found.
-  std::vector<double>& window = windowSeconds_[size_t(group)];
-  const double slowest = *std::max_element(window.begin(), window.end());
-  uint64_t& decisions = balanceDecisions_[size_t(group)];
-  double& span = windowSpan_[size_t(group)];
-  const double needed = span * settings_.balanceWindow / double(1 << std::max(0, 3 - int(decisions)));
-  if (settings_.balanceWindow > 0.0 && ranks_ > 1 && slowest * groups() >= needed) {
-    ++decisions;
-    moves_ = balanceMoves(group, window, windowSquares_[size_t(group)], windowRounds_[size_t(group)]);
-    if (moves_.empty() && span < 8.0) {
-      span *= 2.0;
-    } else {
-      span = 1.0;
-      window.assign(window.size(), 0.0);
-      windowSquares_[size_t(group)].assign(window.size(), 0.0);
-      windowRounds_[size_t(group)] = 0.0;
-    }
+  // The group's placement from the speeds measured since its last decision (balance_window.h); a
+  // gain that the window's own noise could explain (noiseGain, 1 % to 10 %) moves nothing.
+  if (windows_.due(group, groups())) {
+    moves_ = balanceMoves(group);
+    windows_.decided(group, !moves_.empty());
   }
   return agreed;
 }
@@ -318,30 +285,20 @@ void ReplicaPool::readBack(int group, const std::vector<std::vector<double>>& ta
   posted_[size_t(group)].pop_front();
   ++readBackCount_[size_t(group)];
   // Sums taken before the regularisation last moved belong to other targets: dropped.
-  const bool current = mine.epoch == epoch_;
+  const bool current = mine.epoch == ledger_.epoch();
   if (current) epochRead_[size_t(group)] = 1;
-  const bool samePlacement = mine.placement == placementVersion_[size_t(group)];
-  std::vector<double>& window = windowSeconds_[size_t(group)];
-  std::vector<double>& squares = windowSquares_[size_t(group)];
   // Rounds restored from a checkpoint carry no stepping times: they are not timing data.
-  std::vector<RoundTail> read;
+  std::vector<double> seconds;
   bool timed = false;
-  for (const std::vector<double>& t : tails) {
-    read.push_back(readRoundTail(t, m, active_));
-    timed |= read.back().seconds > 0.0;
-  }
-  if (samePlacement && timed) windowRounds_[size_t(group)] += 1.0;
-  for (size_t r = 0; r < read.size(); ++r) {
-    const RoundTail& t = read[r];
+  for (const std::vector<double>& tail : tails) {
+    const RoundTail t = readRoundTail(tail, m, active_);
     agreeOn(t, agreed);
-    if (samePlacement) {
-      window[r] += t.seconds;
-      squares[r] += t.seconds * t.seconds;
-    }
-    if (!active_ || !current) continue;
-    for (int k = 0; k < m; ++k) largeSum_[size_t(k)] += t.largeSums[size_t(k)];
-    largeCount_ += t.largeCount;
+    seconds.push_back(t.seconds);
+    timed |= t.seconds > 0.0;
+    if (active_ && current) ledger_.addLargeSteps(t.largeSums, t.largeCount);
   }
+  // Stepping times of rounds stepped before the group's chains last moved describe the old placement.
+  if (mine.placement == placementVersion_[size_t(group)]) windows_.addRound(group, seconds, timed);
   agreedElapsed_ = agreed.elapsed;
 }
 
@@ -389,8 +346,7 @@ void ReplicaPool::exchange(int group, const std::vector<std::vector<double>>& me
   for (size_t i = 0; i < chains_.size(); ++i) chains_[i].setLevel(levelOf_[size_t(hosted()[i])]);
 }
 
-std::vector<ChainMove> ReplicaPool::balanceMoves(int group, const std::vector<double>& seconds,
-                                                 const std::vector<double>& squares, double rounds) const {
+std::vector<ChainMove> ReplicaPool::balanceMoves(int group) const {
   // The units that move: chains, or whole ladders (named by their first chain) with local decisions.
   const int m = levels();
   const int unit = localDecisions() ? m : 1;
@@ -401,7 +357,8 @@ std::vector<ChainMove> ReplicaPool::balanceMoves(int group, const std::vector<do
       if (groupOf(c) == group && c % unit == 0) units[size_t(r)].push_back(c);
     counts[size_t(r)] = int(units[size_t(r)].size());
   }
-  const double minGain = noiseGain(counts, seconds, squares, rounds, 0.01, 0.1);
+  const std::vector<double>& seconds = windows_.seconds(group);
+  const double minGain = noiseGain(counts, seconds, windows_.squares(group), windows_.rounds(group), 0.01, 0.1);
   std::vector<ChainMove> moves;
   for (const ChainMove& u : planMoves(units, balancedCounts(counts, seconds, minGain)))
     for (int k = 0; k < unit; ++k) moves.push_back({u.chain + k, u.from, u.to});
@@ -410,7 +367,7 @@ std::vector<ChainMove> ReplicaPool::balanceMoves(int group, const std::vector<do
 
 std::vector<uint64_t> ReplicaPool::travellingChain(int chain) const {
   std::vector<uint64_t> state = chains_[size_t(localIndex_[size_t(chain)])].serialize();
-  state.push_back(epochOf_[size_t(chain)] == epoch_ ? 0 : 1);
+  state.push_back(epochOf_[size_t(chain)] == ledger_.epoch() ? 0 : 1);
   state.push_back(trips_.phase(chain));  // only the host tracks it with local decisions
   return state;
 }
@@ -419,7 +376,7 @@ std::vector<uint64_t> ReplicaPool::noteArrival(int chain, const std::vector<uint
   if (travelling.size() < 5) throw std::runtime_error("truncated replica-chain state");
   std::vector<uint64_t> state(travelling.begin(), travelling.end() - 2);
   levelOf_[size_t(chain)] = ReplicaChain::serializedLevel(state);
-  epochOf_[size_t(chain)] = travelling[travelling.size() - 2] != 0 ? epoch_ - 1 : epoch_;  // owed: a stale epoch
+  epochOf_[size_t(chain)] = travelling[travelling.size() - 2] != 0 ? ledger_.epoch() - 1 : ledger_.epoch();  // owed: a stale epoch
   trips_.setPhase(chain, uint8_t(travelling.back()));
   return state;
 }

@@ -20,8 +20,10 @@
 #include "parallel/per_worker.h"
 #include "replica/exchange.h"
 #include "replica/family.h"
+#include "replica/balance_window.h"
 #include "replica/level_estimator.h"
 #include "replica/load_balance.h"
+#include "replica/normaliser_ledger.h"
 #include "replica/replica_settings.h"
 #include "replica/replica_chain.h"
 #include "replica/round_tail.h"
@@ -105,8 +107,8 @@ class ReplicaPool {
   size_t unread(int group) const { return posted_[size_t(group)].size(); }
   // How often the regularisation moved the targets, and the samples the normalisers now rest on
   // (bootstrap and large steps, both under the current targets).
-  uint64_t regularisationMoves() const { return epoch_; }
-  double normaliserSamples() const { return bootstrapCount_ + largeCount_; }
+  uint64_t regularisationMoves() const { return ledger_.epoch(); }
+  double normaliserSamples() const { return ledger_.samples(); }
   uint64_t roundsReadBack(int group) const { return readBackCount_[size_t(group)]; }
   // Collectives still pending when the loop ends.
   size_t inFlight(int group) const;
@@ -151,8 +153,8 @@ class ReplicaPool {
   void stepChain(size_t i, uint64_t steps, int worker, std::vector<Film>& films, LargeStepSums& large);
   const std::vector<int>& hosted() const { return hostedByRank_[size_t(rank_)]; }
   void reindex();  // localIndex_ from hosted()
-  std::vector<ChainMove> balanceMoves(int group, const std::vector<double>& seconds, const std::vector<double>& squares,
-                                      double rounds) const;
+  // The moves that give each rank chains of the group in proportion to its measured speed.
+  std::vector<ChainMove> balanceMoves(int group) const;
   void exchange(int group, const std::vector<std::vector<double>>& messages, uint64_t round);
   // Reads back every rank's message tail (large-step sums and count, seconds, stop, elapsed) of the
   // group's oldest round not read back yet.
@@ -181,24 +183,15 @@ class ReplicaPool {
   std::vector<std::vector<int>> hostedByRank_;  // global chain ids each rank hosts (placement)
   std::vector<int> localIndex_;         // every chain's index in chains_, -1 if hosted elsewhere
   std::vector<ReplicaChain> chains_;    // this rank's, in hosted() order
-  std::vector<std::vector<double>> windowSeconds_;  // per group, every rank's stepping time since its last placement decision
-  std::vector<std::vector<double>> windowSquares_;  // ... and the sum of its squares per round
-  std::vector<double> windowRounds_;                // ... over this many rounds
+  BalanceWindows windows_;              // when to decide a group's placement again, and the speeds measured
   std::vector<ChainMove> moves_;        // planned, not yet committed
   std::vector<std::pair<int, ReplicaChain>> imported_;
   std::vector<LevelCounters> departed_;  // counters of chains this rank gave away
   uint64_t chainMoves_ = 0;
-  std::vector<uint64_t> balanceDecisions_;  // per group
-  std::vector<double> windowSpan_;          // per group: windows the current measurement may last (1 to 8)
-  uint64_t epoch_ = 0;                  // regularisation moves so far
   std::vector<uint64_t> epochOf_;       // every chain's: the epoch its state was last evaluated in
   std::vector<int> levelOf_;            // every chain's level (kept identical on every rank)
-  std::vector<double> bootstrapSum_;    // sum of q_k over the bootstrap
-  double bootstrapCount_ = 0.0;
-  double bootstrapSamples_ = 0.0;       // the bootstrap's size, also after the targets moved
+  NormaliserLedger ledger_;             // what the normalisers rest on, and the targets' epoch
   double meanTarget_ = 0.0;             // the bootstrap's mean target: the family's scale
-  std::vector<double> largeSum_;        // all ranks' large-step sums so far
-  double largeCount_ = 0.0;
   std::vector<LargeStepSums> pendingLarge_;  // per group: this rank's, since the group's last message
   // This rank's large-step sums in a posted message, and the epoch they were taken in.
   struct PostedRound {
