@@ -6,10 +6,15 @@
 #           threads/ranks and the median.
 #   memory: ring and water-box at 1024x1024, 1 spp of bdpt, both set-ups: the node's resident
 #           memory is the sum of the ranks' peaks (stats.json peak_resident_mib_per_rank).
-# Usage: scripts/bench/threads.sh [PAIRS]   (default 5; writes out/bench/threads.txt)
+# Usage: scripts/bench/threads.sh [PAIRS] [INTEGRATOR...]   (default 5 pairs of every integrator and
+#   the memory; with integrators named, only their speed; writes out/bench/threads.txt)
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
 PAIRS="${1:-5}"
+shift || true
+INTEGRATORS=("$@")
+MEMORY=$((${#INTEGRATORS[@]} == 0))
+((MEMORY)) && INTEGRATORS=(pt bdpt erpt pssmlt mmlt relt)
 OUT="$ROOT/out/bench"
 TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
@@ -32,7 +37,7 @@ field() { /usr/bin/python3 -c "import json,sys; j=json.load(open('$TMP/stats.jso
 
 {
   echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores; $(date -u +%Y-%m-%d); commit $(git -C "$ROOT" rev-parse --short HEAD)"
-  for integ in pt bdpt erpt pssmlt mmlt relt; do
+  for integ in "${INTEGRATORS[@]}"; do
     case "$integ" in
       pt) amount=(--spp 256); key=samples_per_second ;;
       bdpt) amount=(--spp 64); key=samples_per_second ;;
@@ -48,7 +53,7 @@ field() { /usr/bin/python3 -c "import json,sys; j=json.load(open('$TMP/stats.jso
     done | tee "$TMP/pairs"
     awk '{print $NF}' "$TMP/pairs" | median | awk -v i="$integ" '{printf "%-5s median threads/ranks %.3f\n", i, $1}'
   done
-  for scene in ring water-box; do
+  ((MEMORY)) && for scene in ring water-box; do
     for setup in ranks threads; do
       run "$setup" "$ROOT/scenes/$scene.gltf" --integrator bdpt --spp 1 --width 1024 --height 1024
       awk -v s="$scene" -v u="$setup" -v m="$(field "sum(j['peak_resident_mib_per_rank'])")" \

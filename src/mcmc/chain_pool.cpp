@@ -75,7 +75,7 @@ Film& ChainPool::filmOf(int worker, size_t i, Film& film) {
   return workerFilms_[size_t(worker - 1)][d];
 }
 
-void ChainPool::gatherWorkers(Film& film) {
+void ChainPool::gatherWorkerFilms(Film& film) {
   const std::span<Film> into = depthFilms_ ? std::span<Film>(films_) : std::span<Film>(&film, 1);
   for (std::vector<Film>& own : workerFilms_) relt::gatherWorkerFilms(into, own);
 }
@@ -95,7 +95,6 @@ void ChainPool::run(const std::vector<uint64_t>& steps, Film& film) {
       });
     }
   });
-  gatherWorkers(film);
 }
 
 std::vector<uint64_t> ChainPool::checkpointPart() const {

@@ -21,8 +21,11 @@ class ChainPool {
 
   // Advances chain i by steps[i] mutations (indices as in the `chains` given to the constructor).
   // Splats go to `film`, except for mmlt with a stratified plan: to one film per depth. Workers
-  // other than the first splat into films of their own, added in worker order when the round ends.
+  // other than the first splat into films of their own, which gatherWorkerFilms adds in worker
+  // order: before the films are read (snapshots, checkpoints, the end), not after every round
+  // (with a stratified plan that would be a whole film per path length each round).
   void run(const std::vector<uint64_t>& steps, Film& film);
+  void gatherWorkerFilms(Film& film);
   // mmlt, stratified: adds weight[d] x depth d's film to `into` (see mmltDepthWeights); else nothing.
   void mergeDepthFilms(const std::vector<double>& weight, Film& into) const;
   size_t size() const { return chains_.size(); }
@@ -53,7 +56,6 @@ class ChainPool {
   void withEvaluator(size_t i, int worker, F&& f);
   // The film worker w splats chain i into.
   Film& filmOf(int worker, size_t i, Film& film);
-  void gatherWorkers(Film& film);
 
   std::vector<int> ids_;  // global chain ids, as given to the constructor
   std::vector<McmcChain> chains_;

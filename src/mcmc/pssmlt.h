@@ -67,7 +67,7 @@ struct ChainCounters {
 
 // One Metropolis-Hastings chain on a point of primary sample space. `Eval` is any callable
 // (SampleSource&, PathSample&) -> target, e.g. PssEvaluator or MMLT's fixed-length evaluator.
-class McmcChain {
+class alignas(64) McmcChain {  // aligned: workers step neighbouring chains, which must share no cache line
  public:
   McmcChain(uint64_t seed, int chain, const PssmltSettings& settings);
 

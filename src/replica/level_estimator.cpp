@@ -19,14 +19,4 @@ double LevelEstimator::classFactor(const double* q, int level, int cls) const {
   return (beta_ == 1.0 ? 1.0 : std::pow(own, beta_ - 1.0)) / sum;
 }
 
-void LevelEstimator::splat(const PathSample& sample, const double* q, int level, double e, Film& film) const {
-  if (!(e > 0.0) || sample.splats.empty()) return;
-  std::array<double, kPathClassCount> factor;
-  for (int n = 0; n < kPathClassCount; ++n) factor[size_t(n)] = e * classFactor(q, level, n);
-  for (const Splat& s : sample.splats) {
-    const double f = factor[static_cast<size_t>(s.cls)];
-    if (f > 0.0) film.addSplat(s.film, s.value, f);
-  }
-}
-
 }  // namespace relt

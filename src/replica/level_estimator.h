@@ -7,6 +7,7 @@
 //
 // to the film; beta = 1 is the balance heuristic, beta = 2 the power heuristic. With N steps per
 // level the pixel is (film area / N) times the film sum.
+#include <array>
 #include <vector>
 
 #include "film/film.h"
@@ -22,8 +23,18 @@ class LevelEstimator {
   void setNormalisers(const std::vector<double>& b) { b_ = b; }
   const std::vector<double>& normalisers() const { return b_; }
 
-  // Adds the splats of a state (targets q of every level) held by `level`, with weight e.
-  void splat(const PathSample& sample, const double* q, int level, double e, Film& film) const;
+  // Adds the splats of a state (targets q of every level) held by `level`, with weight e, to a
+  // film (or anything with Film's addSplat: a SplatLog).
+  template <class Sink>
+  void splat(const PathSample& sample, const double* q, int level, double e, Sink& film) const {
+    if (!(e > 0.0) || sample.splats.empty()) return;
+    std::array<double, kPathClassCount> factor;
+    for (int n = 0; n < kPathClassCount; ++n) factor[size_t(n)] = e * classFactor(q, level, n);
+    for (const Splat& s : sample.splats) {
+      const double f = factor[static_cast<size_t>(s.cls)];
+      if (f > 0.0) film.addSplat(s.film, s.value, f);
+    }
+  }
   // The factor a class-n splat of that state is multiplied by (before e); 0 if level k does not
   // estimate class n.
   double classFactor(const double* q, int level, int cls) const;

@@ -77,16 +77,15 @@ void ReplicaChain::refresh(const LevelEvaluator& eval) {
   start(eval, key, state());
 }
 
-void ReplicaChain::run(uint64_t steps, const LevelEvaluator& eval, const LevelEstimator& estimator, Film& film,
-                       LargeStepSums& large) {
+template <class Output>
+void ReplicaChain::run(uint64_t steps, const LevelEvaluator& eval, const LevelEstimator& estimator, Output& out) {
   const auto t0 = Clock::now();
-  for (uint64_t i = 0; i < steps; ++i) step(eval, &estimator, &film, large);
+  for (uint64_t i = 0; i < steps; ++i) step(eval, &estimator, &out);
   counters_[size_t(level_)].seconds += std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
 void ReplicaChain::explore(uint64_t steps, const LevelEvaluator& eval) {
-  LargeStepSums unused(family_.levels());
-  for (uint64_t i = 0; i < steps; ++i) step(eval, nullptr, nullptr, unused);
+  for (uint64_t i = 0; i < steps; ++i) step<DirectOutput>(eval, nullptr, nullptr);
 }
 
 StreamValues ReplicaChain::state() const {
@@ -97,8 +96,8 @@ StreamValues ReplicaChain::state() const {
   return values;
 }
 
-void ReplicaChain::step(const LevelEvaluator& eval, const LevelEstimator* estimator, Film* film,
-                        LargeStepSums& large) {
+template <class Output>
+void ReplicaChain::step(const LevelEvaluator& eval, const LevelEstimator* estimator, Output* out) {
   const size_t k = size_t(level_);
   const bool isLarge = rng_.uniform() < family_.largeStepProbability(level_);
   u_.startIteration(isLarge);
@@ -106,18 +105,19 @@ void ReplicaChain::step(const LevelEvaluator& eval, const LevelEstimator* estima
   LevelCounters& c = counters_[k];
   if (!finite) ++c.nonFinite;
   (isLarge ? c.largeProposed : c.smallProposed)++;
-  if (isLarge) {
-    for (size_t l = 0; l < proposal_.q.size(); ++l) large.sum[l] += proposal_.q[l];
-    ++large.count;
-  }
+  if (isLarge && out) out->addLargeStep(proposal_.q);
   const double a = acceptance(current_.q[k], proposal_.q[k]);
   if (!(proposal_.q[k] > 0.0)) ++c.invalidProposals;
   // Expected values: the current state with 1 - a, the proposal with a (thesis digest §2.7).
-  if (estimator) {
-    if (current_.q[k] > 0.0 && a < 1.0) estimator->splat(current_.path, current_.q.data(), level_, 1.0 - a, *film);
-    if (a > 0.0) estimator->splat(proposal_.path, proposal_.q.data(), level_, a, *film);
+  if (estimator && out) {
+    if (current_.q[k] > 0.0 && a < 1.0) estimator->splat(current_.path, current_.q.data(), level_, 1.0 - a, *out);
+    if (a > 0.0) estimator->splat(proposal_.path, proposal_.q.data(), level_, a, *out);
   }
   if (keepOrRevert(rng_.uniformDouble() < a, u_, current_, proposal_)) (isLarge ? c.largeAccepted : c.smallAccepted)++;
 }
+
+// The outputs a pool steps its chains into: one worker's straight, several workers' kept in order.
+template void ReplicaChain::run(uint64_t, const LevelEvaluator&, const LevelEstimator&, DirectOutput&);
+template void ReplicaChain::run(uint64_t, const LevelEvaluator&, const LevelEstimator&, ChainLog&);
 
 }  // namespace relt

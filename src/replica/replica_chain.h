@@ -9,6 +9,7 @@
 
 #include "core/rng.h"
 #include "core/sampling.h"
+#include "film/splat_log.h"
 #include "mcmc/pss_evaluator.h"
 #include "mcmc/pssmlt.h"
 #include "pss/primary_sample_vector.h"
@@ -31,8 +32,42 @@ struct LargeStepSums {
     for (size_t k = 0; k < sum.size(); ++k) sum[k] += other.sum[k];
     count += other.count;
   }
+  // One large step's targets of every level.
+  void addLargeStep(const std::vector<double>& q) {
+    for (size_t k = 0; k < sum.size(); ++k) sum[k] += q[k];
+    ++count;
+  }
   std::vector<double> sum;
   uint64_t count = 0;
+};
+
+// Where a chain's steps go: splats straight into a film and large steps into the sums.
+struct DirectOutput {
+  Film& film;
+  LargeStepSums& large;
+  void addSplat(const Vec2& p, const Color& value, double weight) { film.addSplat(p, value, weight); }
+  void addLargeStep(const std::vector<double>& q) { large.addLargeStep(q); }
+};
+
+// The same kept in order (a worker thread's chain), for replayInto to add once its turn comes: the
+// film and the sums then get exactly what DirectOutput would have given them.
+struct ChainLog {
+  SplatLog splats;
+  std::vector<std::vector<double>> largeSteps;  // each large step's targets
+  size_t largeCount = 0;                        // of largeSteps in use (their storage is kept)
+  void addSplat(const Vec2& p, const Color& value, double weight) { splats.addSplat(p, value, weight); }
+  void addLargeStep(const std::vector<double>& q) {
+    if (largeCount == largeSteps.size()) largeSteps.emplace_back();
+    largeSteps[largeCount++] = q;
+  }
+  void replayInto(Film& film, LargeStepSums& large) const {
+    splats.replayInto(film);
+    for (size_t i = 0; i < largeCount; ++i) large.addLargeStep(largeSteps[i]);
+  }
+  void clear() {
+    splats.clear();
+    largeCount = 0;
+  }
 };
 
 // Evaluates one point of primary sample space: the path's splats and every level's target.
@@ -51,7 +86,7 @@ class LevelEvaluator {
 // The random-stream key of chain c of a render.
 uint64_t replicaChainKey(uint64_t seed, int chain);
 
-class ReplicaChain {
+class alignas(64) ReplicaChain {  // aligned: workers step neighbouring chains, which must share no cache line
  public:
   // `key` seeds the chain's mutations and decisions (replicaChainKey for a render's chains).
   ReplicaChain(uint64_t key, int level, const LevelFamily& family);
@@ -69,9 +104,10 @@ class ReplicaChain {
   // Starts at the point an independent source with `key` produces (a regenerated bootstrap sample),
   // or at `prefix` (a given state) continued by that source where the path needs more numbers.
   void start(const LevelEvaluator& eval, uint64_t key, const StreamValues& prefix = {});
-  // `steps` Metropolis steps at the current level, splatted through the estimator.
-  void run(uint64_t steps, const LevelEvaluator& eval, const LevelEstimator& estimator, Film& film,
-           LargeStepSums& large);
+  // `steps` Metropolis steps at the current level, splatted through the estimator into `out`
+  // (DirectOutput or ChainLog), its large steps' targets too.
+  template <class Output>
+  void run(uint64_t steps, const LevelEvaluator& eval, const LevelEstimator& estimator, Output& out);
   // Evaluates the current state again (the targets changed: regularisation).
   void refresh(const LevelEvaluator& eval);
   // `steps` Metropolis steps that splat nothing (population annealing).
@@ -90,8 +126,9 @@ class ReplicaChain {
     PathSample path;
     std::vector<double> q;
   };
-  // estimator and film null: nothing is splatted.
-  void step(const LevelEvaluator& eval, const LevelEstimator* estimator, Film* film, LargeStepSums& large);
+  // estimator and out null: nothing is splatted or summed.
+  template <class Output>
+  void step(const LevelEvaluator& eval, const LevelEstimator* estimator, Output* out);
 
   const LevelFamily& family_;
   PrimarySampleVector u_;

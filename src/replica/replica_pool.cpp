@@ -1,6 +1,7 @@
 #include "replica/replica_pool.h"
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 
 #include "mcmc/pssmlt.h"
@@ -130,29 +131,50 @@ void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films, 
     }
     stepsPerChain_ += steps;
   }
-  // The group's hosted chains, dealt to the workers in turn: chain k of them to worker k mod T.
-  // Worker 0 adds to the live films and sums, the others to their own (sums added in worker order).
-  std::vector<size_t> mine;
+  std::vector<size_t> mine;  // the group's hosted chains, in order
   for (size_t i = 0; i < chains_.size(); ++i)
     if (groupOf(hosted()[i]) == group) mine.push_back(i);
+  LargeStepSums& large = pendingLarge_[size_t(group)];
   const int workers = std::min(int(evaluators_.size()), std::max(int(mine.size()), 1));
-  if (workers > 1 && workerFilms_.empty()) {
-    const std::vector<Film> empty(films.size(), Film(films[0].width(), films[0].height()));
-    workerFilms_.assign(evaluators_.size() - 1, empty);
+  if (workers == 1) {
+    for (size_t i : mine) {
+      DirectOutput out{filmOf(i, films), large};
+      stepChain(i, steps, 0, out);
+      if (progress) progress();
+    }
+    return;
   }
-  std::vector<LargeStepSums> large(size_t(workers - 1), LargeStepSums(levels()));
+  // Each worker takes the next chain as soon as it is free, so none waits for another's dearer
+  // chains at the end of the round; a chain's splats and large steps are kept (ChainLog) and added
+  // in chain order, so the films and sums are bit for bit those of one worker. The first worker
+  // adds every finished chain in turn between its own (the others need not wait for that).
+  if (logs_.size() < mine.size()) logs_.resize(mine.size());
+  std::vector<std::atomic<bool>> finished(mine.size());
+  std::atomic<size_t> next{0};
+  size_t added = 0;
+  auto addFinished = [&] {
+    for (; added < mine.size() && finished[added].load(std::memory_order_acquire); ++added)
+      logs_[added].replayInto(filmOf(mine[added], films), large);
+  };
   runOnWorkers(workers, [&](int w) {
-    LargeStepSums& sums = w == 0 ? pendingLarge_[size_t(group)] : large[size_t(w - 1)];
-    std::vector<Film>& own = w == 0 ? films : workerFilms_[size_t(w - 1)];
-    for (size_t k = size_t(w); k < mine.size(); k += size_t(workers)) {
-      stepChain(mine[k], steps, w, own, sums);
-      if (w == 0 && progress) progress();  // MPI calls stay on the main thread
+    for (size_t k = next++; k < mine.size(); k = next++) {
+      logs_[k].clear();
+      stepChain(mine[k], steps, w, logs_[k]);
+      finished[k].store(true, std::memory_order_release);
+      if (w > 0) continue;
+      addFinished();
+      if (progress) progress();  // MPI calls stay on the main thread
     }
   });
-  for (const LargeStepSums& l : large) pendingLarge_[size_t(group)].add(l);
+  addFinished();  // every chain has finished now
 }
 
-void ReplicaPool::stepChain(size_t i, uint64_t steps, int worker, std::vector<Film>& films, LargeStepSums& large) {
+Film& ReplicaPool::filmOf(size_t i, std::vector<Film>& films) const {
+  return films.size() > 1 ? films[size_t(chains_[i].level())] : films[0];
+}
+
+template <class Output>
+void ReplicaPool::stepChain(size_t i, uint64_t steps, int worker, Output& out) {
   const int c = hosted()[i];
   ReplicaChain& chain = chains_[i];
   const LevelEvaluator& eval = evaluators_[size_t(worker)];
@@ -160,12 +182,7 @@ void ReplicaPool::stepChain(size_t i, uint64_t steps, int worker, std::vector<Fi
     chain.refresh(eval);
     epochOf_[size_t(c)] = ledger_.epoch();
   }
-  Film& film = films.size() > 1 ? films[size_t(chain.level())] : films[0];
-  chain.run(steps, eval, estimator_, film, large);
-}
-
-void ReplicaPool::gatherWorkerFilms(std::vector<Film>& films) {
-  for (std::vector<Film>& own : workerFilms_) relt::gatherWorkerFilms(films, own);
+  chain.run(steps, eval, estimator_, out);
 }
 
 size_t ReplicaPool::messageLength(int group, int rank) const {

@@ -77,11 +77,9 @@ class ReplicaPool {
 
   // Steps every hosted chain of `group` `steps` times, on the rank's worker threads. films: one,
   // or one per level (per-level layers). `progress`, if given, runs on the calling thread after
-  // each chain it stepped (the MPI layer moves pending messages). With several workers, those
-  // other than the first splat into films of their own: gatherWorkerFilms() adds them to `films`
-  // (before they are read: snapshots, checkpoints, the end).
+  // each chain it stepped (the MPI layer moves pending messages). The films and the large-step
+  // sums come out the same, bit for bit, whatever the number of workers.
   void runRound(int group, uint64_t steps, std::vector<Film>& films, const std::function<void()>& progress = {});
-  void gatherWorkerFilms(std::vector<Film>& films);
   // This rank's message for the group's collective (`roundSeconds`: time this rank spent in
   // runRound), and the length rank `rank`'s message has (it changes when chains move).
   // `stop`: this rank was asked to stop (a signal); every rank then ends after this round.
@@ -150,7 +148,10 @@ class ReplicaPool {
   // The bootstrap's normalisers and every hosted chain's first state (resampled or annealed).
   void startFromBootstrap(const std::vector<double>& bootstrap);
   const LevelEvaluator& evaluator() const { return evaluators_[0]; }  // the calling thread's
-  void stepChain(size_t i, uint64_t steps, int worker, std::vector<Film>& films, LargeStepSums& large);
+  template <class Output>
+  void stepChain(size_t i, uint64_t steps, int worker, Output& out);
+  // The film hosted chain i splats into: the one film, or its level's.
+  Film& filmOf(size_t i, std::vector<Film>& films) const;
   const std::vector<int>& hosted() const { return hostedByRank_[size_t(rank_)]; }
   void reindex();  // localIndex_ from hosted()
   // The moves that give each rank chains of the group in proportion to its measured speed.
@@ -177,7 +178,7 @@ class ReplicaPool {
   LevelFamily family_;
   LevelEstimator estimator_;
   std::vector<LevelEvaluator> evaluators_;  // per worker thread
-  std::vector<std::vector<Film>> workerFilms_;  // workers 1 ..: their splats since the last gather
+  std::vector<ChainLog> logs_;  // with several workers: each chain's round, kept until its turn
   bool active_ = false;
   Placement placement_;
   std::vector<std::vector<int>> hostedByRank_;  // global chain ids each rank hosts (placement)

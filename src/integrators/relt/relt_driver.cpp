@@ -226,14 +226,12 @@ ReltOutcome runRelt(Job& job, Renderer& renderer, const RenderSettings& settings
   JobTransport transport(job, pool.localDecisions());
   auto writeSnapshot = [&](uint64_t rounds, double elapsed) {
     transport.meet();
-    pool.gatherWorkerFilms(films);
     lastSnapshot = elapsed;
     const std::vector<double> sums = reducedSum(job, films);
     if (job.isRoot()) snapshot(sums, replicaResolveDivisor(schedule.stepsAfter(rounds), rs.ladders, area));
   };
   auto writeCheckpoint = [&](uint64_t rounds, double elapsed) {
     transport.meet();
-    pool.gatherWorkerFilms(films);
     const nlohmann::json progress = {
         {"rounds", rounds}, {"elapsed", elapsed}, {"steps_per_chain", schedule.stepsAfter(rounds)}};
     saveCheckpoint(job, plan, "relt", progress, films, pool.checkpointPart());
@@ -263,7 +261,6 @@ ReltOutcome runRelt(Job& job, Renderer& renderer, const RenderSettings& settings
     if (checkpointNow(plan, elapsed, lastCheckpoint, true, true)) writeCheckpoint(rounds, elapsed);
   };
   const RoundLoopResult loop = runRoundLoop(pool, schedule, transport, films, hooks, resumed);
-  pool.gatherWorkerFilms(films);
   if (loop.stopped) job.markStopAgreed();
   const double roundCollective = job.collectiveSeconds() - collectiveBefore;
   // The loop's agreed time is that of the messages read back (normaliser lag): the real end here.
