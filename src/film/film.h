@@ -20,6 +20,8 @@ class Film {
   // a weight that is not finite, is dropped whole and counted: one bad number must not poison a pixel.
   bool addSample(const PathSample& sample, double weight = 1.0);
   void addSplat(const Vec2& film, const Color& value, double weight);
+  // Samples dropped elsewhere (a SplatLog's), counted here.
+  void addDropped(uint64_t samples) { dropped_ += samples; }
   // Adds weight x another film's sums (same size) and its dropped-sample count.
   void addWeighted(const Film& other, double weight);
   // Zero sums and no dropped samples, as new.

@@ -2,6 +2,8 @@
 // Splats kept in the order they were made, to be added to a film later: worker threads that step
 // chains in whatever order they finish leave the film's sums bit for bit as one thread stepping
 // them in turn would, when each chain's log is added in chain order.
+#include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "film/film.h"
@@ -11,11 +13,25 @@ namespace relt {
 class SplatLog {
  public:
   void addSplat(const Vec2& film, const Color& value, double weight) { splats_.push_back({film, value, weight}); }
-  // Adds every splat to `film` in the order made (Film::addSplat, as if made there).
+  // As Film::addSample: a sample with a non-finite value or weight is dropped whole and counted.
+  bool addSample(const PathSample& sample, double weight = 1.0) {
+    if (!sample.finite() || !std::isfinite(weight)) {
+      ++dropped_;
+      return false;
+    }
+    for (const Splat& s : sample.splats) addSplat(s.film, s.value, weight);
+    return true;
+  }
+  // Adds every splat to `film` in the order made, and the dropped samples to its count: the film
+  // ends as if they had been made there.
   void replayInto(Film& film) const {
     for (const Entry& e : splats_) film.addSplat(e.film, e.value, e.weight);
+    film.addDropped(dropped_);
   }
-  void clear() { splats_.clear(); }
+  void clear() {
+    splats_.clear();
+    dropped_ = 0;
+  }
   size_t size() const { return splats_.size(); }
 
  private:
@@ -25,6 +41,7 @@ class SplatLog {
     double weight;
   };
   std::vector<Entry> splats_;
+  uint64_t dropped_ = 0;
 };
 
 }  // namespace relt

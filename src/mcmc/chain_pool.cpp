@@ -69,32 +69,30 @@ std::vector<Film>& ChainPool::depthFilms(int width, int height) {
   return films_;
 }
 
-Film& ChainPool::filmOf(int worker, size_t i, Film& film) {
-  const size_t d = depthFilms_ ? static_cast<size_t>(depth_[i] - 1) : 0;
-  if (worker == 0) return depthFilms_ ? films_[d] : film;
-  return workerFilms_[size_t(worker - 1)][d];
-}
-
-void ChainPool::gatherWorkerFilms(Film& film) {
-  const std::span<Film> into = depthFilms_ ? std::span<Film>(films_) : std::span<Film>(&film, 1);
-  for (std::vector<Film>& own : workerFilms_) relt::gatherWorkerFilms(into, own);
+Film& ChainPool::filmOf(size_t i, Film& film) {
+  return depthFilms_ ? films_[static_cast<size_t>(depth_[i] - 1)] : film;
 }
 
 void ChainPool::run(const std::vector<uint64_t>& steps, Film& film) {
   depthFilms(film.width(), film.height());
   const int workers = std::min(this->workers(), std::max(int(chains_.size()), 1));
-  if (workerFilms_.empty() && workers > 1) {
-    const std::vector<Film> own(depthFilms_ ? films_.size() : 1, Film(film.width(), film.height()));
-    workerFilms_.assign(size_t(workers - 1), own);
+  auto stepChain = [&](size_t i, int w, auto& sink) {
+    withEvaluator(i, w, [&](auto&& eval) {
+      for (uint64_t k = 0; k < steps[i]; ++k) chains_[i].step(eval, sink);
+    });
+  };
+  if (workers == 1) {
+    for (size_t i = 0; i < chains_.size(); ++i) stepChain(i, 0, filmOf(i, film));
+    return;
   }
-  runOnWorkers(workers, [&](int w) {
-    for (size_t i = size_t(w); i < chains_.size(); i += size_t(workers)) {
-      Film& target = filmOf(w, i, film);
-      withEvaluator(i, w, [&](auto&& eval) {
-        for (uint64_t k = 0; k < steps[i]; ++k) chains_[i].step(eval, target);
-      });
-    }
-  });
+  logs_.resize(chains_.size());
+  runInOrder(
+      workers, chains_.size(),
+      [&](size_t i, int w) {
+        logs_[i].clear();
+        stepChain(i, w, logs_[i]);
+      },
+      [&](size_t i) { logs_[i].replayInto(filmOf(i, film)); });
 }
 
 std::vector<uint64_t> ChainPool::checkpointPart() const {

@@ -6,6 +6,7 @@
 
 #include "mcmc/mmlt.h"
 #include "mcmc/pssmlt.h"
+#include "film/splat_log.h"
 #include "parallel/per_worker.h"
 
 namespace relt {
@@ -20,12 +21,10 @@ class ChainPool {
             const std::vector<int>& chains);
 
   // Advances chain i by steps[i] mutations (indices as in the `chains` given to the constructor).
-  // Splats go to `film`, except for mmlt with a stratified plan: to one film per depth. Workers
-  // other than the first splat into films of their own, which gatherWorkerFilms adds in worker
-  // order: before the films are read (snapshots, checkpoints, the end), not after every round
-  // (with a stratified plan that would be a whole film per path length each round).
+  // Splats go to `film`, except for mmlt with a stratified plan: to one film per depth. With
+  // several workers each takes the next chain when free and its splats are added in chain order
+  // (runInOrder): the films are bit for bit those of one worker.
   void run(const std::vector<uint64_t>& steps, Film& film);
-  void gatherWorkerFilms(Film& film);
   // mmlt, stratified: adds weight[d] x depth d's film to `into` (see mmltDepthWeights); else nothing.
   void mergeDepthFilms(const std::vector<double>& weight, Film& into) const;
   size_t size() const { return chains_.size(); }
@@ -54,15 +53,15 @@ class ChainPool {
   // f(worker's evaluator of chain i): pssmlt's, or mmlt's at the chain's depth.
   template <class F>
   void withEvaluator(size_t i, int worker, F&& f);
-  // The film worker w splats chain i into.
-  Film& filmOf(int worker, size_t i, Film& film);
+  // The film chain i splats into.
+  Film& filmOf(size_t i, Film& film);
 
   std::vector<int> ids_;  // global chain ids, as given to the constructor
   std::vector<McmcChain> chains_;
   std::vector<int> depth_;
   bool depthFilms_ = false;  // mmlt with a stratified plan
   std::vector<Film> films_;  // per depth - 1, sized on first use
-  std::vector<std::vector<Film>> workerFilms_;  // workers 1 ..: film or films per depth, as above
+  std::vector<SplatLog> logs_;  // with several workers: each chain's splats of a run, until their turn
 };
 
 }  // namespace relt

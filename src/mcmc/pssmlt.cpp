@@ -43,22 +43,6 @@ McmcChain::McmcChain(uint64_t seed, int chain, const PssmltSettings& settings)
       rng_(chainKey(seed, static_cast<uint64_t>(chain)), 1),
       pLarge_(settings.largeStepProbability) {}
 
-void McmcChain::finishStep(bool large, float proposed, Film& film) {
-  const float a = acceptance(target_, proposed);
-  (large ? counters_.largeProposed : counters_.smallProposed)++;
-  if (large) counters_.largeTargetSum += proposed;
-  if (!(proposed > 0.0f)) ++counters_.invalidProposals;
-  // Expected values (thesis digest §2.7): the current state with 1 - a, the proposal with a, each
-  // over its own target (the density the chain samples it with, up to b). In double: a target
-  // below 2^-126 (mmlt's long paths) is a subnormal float whose reciprocal overflows float.
-  if (target_ > 0.0f && a < 1.0f) film.addSample(current_, (1.0 - double(a)) / double(target_));
-  if (a > 0.0f) film.addSample(proposal_, double(a) / double(proposed));
-  if (keepOrRevert(rng_.uniform() < a, u_, current_, proposal_)) {
-    target_ = proposed;
-    (large ? counters_.largeAccepted : counters_.smallAccepted)++;
-  }
-}
-
 std::vector<uint64_t> McmcChain::serialize() const {
   WordWriter w;
   w.u64(rng_.state());

@@ -11,6 +11,7 @@
 
 #include "core/sampling.h"
 #include "film/film.h"
+#include "mcmc/metropolis.h"
 #include "mcmc/pss_evaluator.h"
 #include "parallel/per_worker.h"
 #include "pss/chain_defaults.h"
@@ -78,8 +79,9 @@ class alignas(64) McmcChain {  // aligned: workers step neighbouring chains, whi
   void start(Eval&& eval, uint64_t key);
   // One step. Both states are splatted with their expected-value weights divided by their target;
   // the film then needs the factor b * filmArea / (total mutations).
-  template <class Eval>
-  void step(Eval&& eval, Film& film);
+  // `film`: a Film or a SplatLog (a worker's chain, added in chain order later).
+  template <class Eval, class Sink>
+  void step(Eval&& eval, Sink& film);
 
   const ChainCounters& counters() const { return counters_; }
   float target() const { return target_; }
@@ -93,7 +95,8 @@ class alignas(64) McmcChain {  // aligned: workers step neighbouring chains, whi
   void restore(Eval&& eval, const std::vector<uint64_t>& words);
 
  private:
-  void finishStep(bool large, float proposed, Film& film);
+  template <class Sink>
+  void finishStep(bool large, float proposed, Sink& film);
   // restore() without the re-evaluation: the numbers the current path used.
   StreamValues restoreState(const std::vector<uint64_t>& words);
 
@@ -113,11 +116,28 @@ void McmcChain::start(Eval&& eval, uint64_t key) {
     u_.setState(static_cast<SampleStream>(s), source.values(static_cast<SampleStream>(s)));
 }
 
-template <class Eval>
-void McmcChain::step(Eval&& eval, Film& film) {
+template <class Eval, class Sink>
+void McmcChain::step(Eval&& eval, Sink& film) {
   const bool large = rng_.uniform() < pLarge_;
   u_.startIteration(large);
   finishStep(large, eval(u_, proposal_), film);
+}
+
+template <class Sink>
+void McmcChain::finishStep(bool large, float proposed, Sink& film) {
+  const float a = acceptance(target_, proposed);
+  (large ? counters_.largeProposed : counters_.smallProposed)++;
+  if (large) counters_.largeTargetSum += proposed;
+  if (!(proposed > 0.0f)) ++counters_.invalidProposals;
+  // Expected values (thesis digest §2.7): the current state with 1 - a, the proposal with a, each
+  // over its own target (the density the chain samples it with, up to b). In double: a target
+  // below 2^-126 (mmlt's long paths) is a subnormal float whose reciprocal overflows float.
+  if (target_ > 0.0f && a < 1.0f) film.addSample(current_, (1.0 - double(a)) / double(target_));
+  if (a > 0.0f) film.addSample(proposal_, double(a) / double(proposed));
+  if (keepOrRevert(rng_.uniform() < a, u_, current_, proposal_)) {
+    target_ = proposed;
+    (large ? counters_.largeAccepted : counters_.smallAccepted)++;
+  }
 }
 
 template <class Eval>

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <exception>
 #include <thread>
 #include <vector>
@@ -54,6 +55,24 @@ void runOnWorkers(int workers, const std::function<void(int worker)>& work) {
   for (std::thread& t : threads) t.join();
   for (const std::exception_ptr& e : failed)
     if (e) std::rethrow_exception(e);
+}
+
+void runInOrder(int workers, size_t n, const std::function<void(size_t k, int worker)>& item,
+                const std::function<void(size_t k)>& after) {
+  std::vector<std::atomic<bool>> done(n);
+  std::atomic<size_t> next{0};
+  size_t finished = 0;  // after() has run for 0 .. finished - 1
+  auto catchUp = [&] {
+    for (; finished < n && done[finished].load(std::memory_order_acquire); ++finished) after(finished);
+  };
+  runOnWorkers(workers, [&](int w) {
+    for (size_t k = next++; k < n; k = next++) {
+      item(k, w);
+      done[k].store(true, std::memory_order_release);
+      if (w == 0) catchUp();
+    }
+  });
+  catchUp();
 }
 
 std::vector<double> sumOfWorkerShares(int workers, int first, int stride,

@@ -30,6 +30,13 @@ int currentWorker();
 // have ended; an exception thrown by a worker is rethrown then (the lowest worker's if several).
 void runOnWorkers(int workers, const std::function<void(int worker)>& work);
 
+// Runs item(k, worker) for k = 0 .. n - 1 on `workers` threads, each taking the next k as soon as
+// it is free (none waits for another's dearer items), and after(k) on the calling thread (worker
+// 0) for every k in order, as soon as k and every item before it are done: results kept per item
+// are combined in one order whatever the workers did. Returns when every after(k) has run.
+void runInOrder(int workers, size_t n, const std::function<void(size_t k, int worker)>& item,
+                const std::function<void(size_t k)>& after);
+
 // A rank's share of a sequence of samples (first, first + stride, ...) split over its workers:
 // worker w computes part(w, first + w * stride, workers * stride), a vector with its samples'
 // entries and zeros elsewhere; the parts are summed. Every entry comes from one worker, so the sum

@@ -1,7 +1,6 @@
 #include "replica/replica_pool.h"
 
 #include <algorithm>
-#include <atomic>
 #include <stdexcept>
 
 #include "mcmc/pssmlt.h"
@@ -144,29 +143,20 @@ void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films, 
     }
     return;
   }
-  // Each worker takes the next chain as soon as it is free, so none waits for another's dearer
-  // chains at the end of the round; a chain's splats and large steps are kept (ChainLog) and added
-  // in chain order, so the films and sums are bit for bit those of one worker. The first worker
-  // adds every finished chain in turn between its own (the others need not wait for that).
+  // Each worker takes the next chain as soon as it is free (none waits for another's dearer
+  // chains); a chain's splats and large steps are kept (ChainLog) and added in chain order on the
+  // calling thread, so the films and sums are bit for bit those of one worker.
   if (logs_.size() < mine.size()) logs_.resize(mine.size());
-  std::vector<std::atomic<bool>> finished(mine.size());
-  std::atomic<size_t> next{0};
-  size_t added = 0;
-  auto addFinished = [&] {
-    for (; added < mine.size() && finished[added].load(std::memory_order_acquire); ++added)
-      logs_[added].replayInto(filmOf(mine[added], films), large);
-  };
-  runOnWorkers(workers, [&](int w) {
-    for (size_t k = next++; k < mine.size(); k = next++) {
-      logs_[k].clear();
-      stepChain(mine[k], steps, w, logs_[k]);
-      finished[k].store(true, std::memory_order_release);
-      if (w > 0) continue;
-      addFinished();
-      if (progress) progress();  // MPI calls stay on the main thread
-    }
-  });
-  addFinished();  // every chain has finished now
+  runInOrder(
+      workers, mine.size(),
+      [&](size_t k, int w) {
+        logs_[k].clear();
+        stepChain(mine[k], steps, w, logs_[k]);
+      },
+      [&](size_t k) {
+        logs_[k].replayInto(filmOf(mine[k], films), large);
+        if (progress) progress();  // MPI calls stay on the calling thread
+      });
 }
 
 Film& ReplicaPool::filmOf(size_t i, std::vector<Film>& films) const {

@@ -197,6 +197,25 @@ TEST(ThreadIndependence, EveryIntegratorsImageIsTheSameOnAnySplitOfRanksAndThrea
   }
 }
 
+// The chain integrators' workers take chains as they come free but add each chain's splats in
+// chain order, so on one rank the thread count changes no bit of the image.
+TEST(ThreadIndependence, AChainIntegratorsImageIsBitForBitTheSameOnAnyNumberOfThreads) {
+  struct Case {
+    std::string integrator, amount;
+  };
+  for (const Case& c : {Case{"pssmlt", "--mutations-per-pixel 4 --chains 7"},
+                        Case{"mmlt", "--mutations-per-pixel 8 --chains 9"},
+                        Case{"relt", "--mutations-per-pixel 4 --ladders 3 --family tempered --levels 3"}}) {
+    SCOPED_TRACE(c.integrator);
+    const std::string dir = makeTempDir("threads-exact-" + c.integrator);
+    const Image one = renderWithRanks(1, c.integrator, dir, c.amount + " --threads 1");
+    EXPECT_GT(one.mean(), 0.0);
+    for (int threads : {2, 3})
+      EXPECT_TRUE(one.rgb == renderWithRanks(1, c.integrator, dir, c.amount + " --threads " + std::to_string(threads)).rgb)
+          << threads << " threads";
+  }
+}
+
 // A checkpoint of a render on two threads holds every worker's sums: resumed for more work, it
 // gives the image of the render that never stopped (bdpt: passes; mmlt: per-depth films; relt:
 // chains whose splats were in the second worker's films at the checkpoint).

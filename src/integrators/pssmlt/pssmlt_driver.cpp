@@ -160,7 +160,6 @@ double ChainRender::normaliser(std::vector<ChainCounters>* perDepthOut, ChainCou
 void ChainRender::writeSnapshot(const SnapshotWriter& snapshot) {
   std::vector<ChainCounters> perDepth;
   const double b = normaliser(&perDepth, nullptr);
-  pool_.gatherWorkerFilms(film_);
   Film merged = film_;
   if (mmlt_) pool_.mergeDepthFilms(mmltDepthWeights(targets_, settings_.maxDepth, perDepth), merged);
   std::vector<double> sums = std::move(merged.data());
@@ -169,7 +168,6 @@ void ChainRender::writeSnapshot(const SnapshotWriter& snapshot) {
 }
 
 void ChainRender::writeCheckpoint(double elapsed) {
-  pool_.gatherWorkerFilms(film_);
   std::vector<Film> films{film_};
   for (const Film& f : pool_.depthFilms(film_.width(), film_.height())) films.push_back(f);
   const nlohmann::json progress = {
@@ -219,7 +217,6 @@ PssmltOutcome ChainRender::outcome() {
   out.rounds = rounds_;
   out.totalMutations = schedule_.mutationsAfter(rounds_);
   out.normaliser = normaliser(&out.perDepth, &out.counters);
-  pool_.gatherWorkerFilms(film_);
   // mmlt: each path length's film joins the image with its own normaliser and step count.
   if (mmlt_) pool_.mergeDepthFilms(mmltDepthWeights(targets_, settings_.maxDepth, out.perDepth), film_);
   return out;
