@@ -65,7 +65,7 @@ std::string unknownSubcommand(int argc, char** argv, const CLI::App& app) {
 
 struct Options {
   relt::RenderSettings render;
-  std::string integrator = relt::kDefaultIntegrator, mis = "power";
+  std::string integrator = relt::kDefaultIntegrator;
   CLI::App* renderCommand = nullptr;
   std::string infoScene;
   std::string compareA, compareB, compareDiff, comparePng;
@@ -129,7 +129,10 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
       ->capture_default_str();
   cmd.add_option("--resume", o.checkpoint.resume,
                  "continue the render of this checkpoint folder (same scene and settings; the budget is the total)");
-  cmd.add_option("--mis", o.mis, "MIS heuristic")->check(CLI::IsMember({"power", "balance"}))->capture_default_str();
+  cmd.add_option_function<std::string>(
+         "--mis", [&r](const std::string& v) { r.heuristic = *relt::parseMisHeuristic(v); }, "MIS heuristic")
+      ->check(CLI::IsMember({"power", "balance"}))
+      ->default_str(relt::misHeuristicName(r.heuristic));
 }
 
 // The image format follows -o's extension; --png is a PNG.
@@ -250,7 +253,6 @@ int main(int argc, char** argv) {
     if (*info) return runInfo(o, root);
     checkRenderOptions(o);
     checkOutputNames(o.render);
-    o.render.heuristic = o.mis == "balance" ? relt::MisHeuristic::Balance : relt::MisHeuristic::Power;
     if (o.threads->count() == 0) o.render.threads = threadsOnAuto();
     relt::mpi::startStallWatchdog(o.stallTimeout);
     relt::mpi::MpiJob job(session);

@@ -13,12 +13,19 @@ class PerWorker {
   explicit PerWorker(int workers, const Args&... args) {
     for (int w = 0; w < workers; ++w) items_.emplace_back(args...);
   }
-  T& operator[](int worker) { return items_[size_t(worker)]; }
-  const T& operator[](int worker) const { return items_[size_t(worker)]; }
+  T& operator[](int worker) { return items_[size_t(worker)].item; }
+  const T& operator[](int worker) const { return items_[size_t(worker)].item; }
   int size() const { return int(items_.size()); }
 
  private:
-  std::deque<T> items_;  // a deque: T need not be movable
+  // Each on cache lines of its own: workers write their objects' members all the time, and two
+  // objects sharing a line would pass it back and forth between the cores.
+  struct alignas(64) Slot {
+    template <class... Args>
+    explicit Slot(const Args&... args) : item(args...) {}
+    T item;
+  };
+  std::deque<Slot> items_;  // a deque: T need not be movable
 };
 
 }  // namespace relt

@@ -1,6 +1,9 @@
 #pragma once
 // Everything a path builder needs to trace one sample: the scene, its acceleration structure,
 // lights, camera and the integrator settings.
+#include <optional>
+#include <string_view>
+
 #include "camera/camera.h"
 #include "light/lights.h"
 #include "scene/ray_tracer.h"
@@ -8,6 +11,12 @@
 namespace relt {
 
 enum class MisHeuristic : uint8_t { Balance, Power };
+inline const char* misHeuristicName(MisHeuristic h) { return h == MisHeuristic::Power ? "power" : "balance"; }
+inline std::optional<MisHeuristic> parseMisHeuristic(std::string_view name) {
+  if (name == "power") return MisHeuristic::Power;
+  if (name == "balance") return MisHeuristic::Balance;
+  return std::nullopt;
+}
 
 struct PathSettings {
   int maxDepth = 8;  // maximum number of path segments

@@ -33,7 +33,7 @@ nlohmann::json RenderSettings::toJson() const {
   j["seed"] = seed;
   j["camera"] = camera;
   j["exposure"] = shortestDecimal(exposure);
-  j["mis"] = heuristic == MisHeuristic::Power ? "power" : "balance";
+  j["mis"] = misHeuristicName(heuristic);
   j["threads"] = threads;
   if (integrator.settingsJson) integrator.settingsJson(*this, j);
   return j;
