@@ -10,7 +10,7 @@
 
 namespace relt {
 
-class SplatLog {
+class alignas(64) SplatLog {  // aligned: neighbouring chains' logs are written by different workers
  public:
   void addSplat(const Vec2& film, const Color& value, double weight) { splats_.push_back({film, value, weight}); }
   // As Film::addSample: a sample with a non-finite value or weight is dropped whole and counted.

@@ -93,24 +93,44 @@ void Renderer::renderDirect(int firstRow, int rowStride, Film& film, uint32_t be
   PathContext direct = *ctx_;
   direct.settings.minDepth = 1;
   direct.settings.maxDepth = 1;  // pt: the emission where the camera ray lands, nothing after it
+  // The rank's rows are dealt to its workers (the i-th to worker i mod T), which add into the one
+  // film: a pixel's samples all land in its own row, so each pixel's sum is made by one worker in
+  // the order one worker would make it, and the image does not depend on the workers. A sample
+  // that is not finite is counted apart (the film's own count is not shared between workers).
+  const int workers = std::max(settings_.threads, 1);
+  std::vector<uint64_t> dropped(size_t(workers), 0);
+  runOnWorkers(workers, [&](int w) {
+    IndependentSource source;
+    PathSample sample;
+    int i = 0;
+    for (int row = firstRow; row < settings_.height; row += rowStride, ++i)
+      if (i % workers == w) dropped[size_t(w)] += renderDirectRow(direct, stream, row, film, begin, end, source, sample);
+  });
+  for (uint64_t n : dropped) film.addDropped(n);
+}
+
+uint64_t Renderer::renderDirectRow(const PathContext& direct, uint64_t stream, int row, Film& film, uint32_t begin,
+                                   uint32_t end, IndependentSource& source, PathSample& sample) const {
   // Positions from a (0,2)-sequence shifted per pixel: the error sits at the emitter's outline,
   // where a pixel is partly covered, and such points resolve a straight edge there far better
   // than a jittered grid or random positions (core/low_discrepancy.h).
-  IndependentSource source;
-  PathSample sample;
-  for (int row = firstRow; row < settings_.height; row += rowStride)
-    for (int x = 0; x < settings_.width; ++x) {
-      const uint64_t pixel = static_cast<uint64_t>(row) * settings_.width + x;
-      Rng shift(hashKey(settings_.seed, stream, pixel));
-      const uint32_t sx = shift.nextU32(), sy = shift.nextU32();
-      for (uint32_t k = begin; k < end; ++k) {
-        source.reset(hashKey(settings_.seed, stream, pixel, static_cast<uint64_t>(k)));
-        const Vec2 offset = shiftedSobol02(k, sx, sy);
-        sample.clear();
-        tracePath(direct, positionInPixel(x, row, offset), source, sample);
+  uint64_t dropped = 0;
+  for (int x = 0; x < settings_.width; ++x) {
+    const uint64_t pixel = static_cast<uint64_t>(row) * settings_.width + x;
+    Rng shift(hashKey(settings_.seed, stream, pixel));
+    const uint32_t sx = shift.nextU32(), sy = shift.nextU32();
+    for (uint32_t k = begin; k < end; ++k) {
+      source.reset(hashKey(settings_.seed, stream, pixel, static_cast<uint64_t>(k)));
+      const Vec2 offset = shiftedSobol02(k, sx, sy);
+      sample.clear();
+      tracePath(direct, positionInPixel(x, row, offset), source, sample);
+      if (sample.finite())
         film.addSample(sample);
-      }
+      else
+        ++dropped;
     }
+  }
+  return dropped;
 }
 
 Image Renderer::resolve(const Film& film, const std::vector<double>& sums, double spp) {

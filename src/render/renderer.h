@@ -38,7 +38,8 @@ class Renderer {
   // camera rays number begin .. end - 1 of every pixel, at the points of a shifted (0,2)-sequence,
   // on streams of their own; after rays 0 .. N - 1, resolve with divisor N (render/direct_pass.h
   // decides N). `probe` traces on streams apart again: rays that decide whether the pass runs
-  // must not be part of its estimate.
+  // must not be part of its estimate. On the rank's worker threads; the film is the same for any
+  // number of them.
   void renderDirect(int firstRow, int rowStride, Film& film, uint32_t begin, uint32_t end, bool probe = false);
   // The direct pass found no emitter in view: the chains estimate the paths of one segment again.
   // Only before any chain has stepped.
@@ -70,6 +71,9 @@ class Renderer {
     uint64_t sampleCount = 0;
   };
   std::vector<std::unique_ptr<RowWorker>> workers_;
+  // renderDirect's samples of one row; returns how many were not finite (not added).
+  uint64_t renderDirectRow(const PathContext& direct, uint64_t stream, int row, Film& film, uint32_t begin, uint32_t end,
+                           IndependentSource& source, PathSample& sample) const;
   static constexpr uint64_t kDirectStream = 0xd12ec7;  // keeps renderDirect's streams apart
   static constexpr uint64_t kProbeStream = 0xd12ec8;   // and the probe's from those
 };

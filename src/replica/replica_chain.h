@@ -51,7 +51,7 @@ struct DirectOutput {
 
 // The same kept in order (a worker thread's chain), for replayInto to add once its turn comes: the
 // film and the sums then get exactly what DirectOutput would have given them.
-struct ChainLog {
+struct alignas(64) ChainLog {  // aligned: neighbouring chains' logs are written by different workers
   SplatLog splats;
   std::vector<std::vector<double>> largeSteps;  // each large step's targets
   size_t largeCount = 0;                        // of largeSteps in use (their storage is kept)
