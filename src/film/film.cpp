@@ -17,12 +17,9 @@ void Film::addSplat(const Vec2& film, const Color& value, double weight) {
 }
 
 bool Film::addSample(const PathSample& sample, double weight) {
-  if (!sample.finite() || !std::isfinite(weight)) {
-    ++dropped_;
-    return false;
-  }
-  for (const Splat& s : sample.splats) addSplat(s.film, s.value, weight);
-  return true;
+  if (addFiniteSample(*this, sample, weight)) return true;
+  ++dropped_;
+  return false;
 }
 
 void Film::addWeighted(const Film& other, double weight) {

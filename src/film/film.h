@@ -1,5 +1,6 @@
 #pragma once
 // Accumulation buffer for splats (double precision, box filter of one pixel).
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -8,6 +9,15 @@
 #include "path/splat.h"
 
 namespace relt {
+
+// Adds a sample's splats scaled by `weight` to `sink` (a Film, a SplatLog), unless a value or the
+// weight is not finite: then nothing, and false (the sink counts it as dropped).
+template <class Sink>
+bool addFiniteSample(Sink& sink, const PathSample& sample, double weight) {
+  if (!sample.finite() || !std::isfinite(weight)) return false;
+  for (const Splat& s : sample.splats) sink.addSplat(s.film, s.value, weight);
+  return true;
+}
 
 class Film {
  public:

@@ -2,7 +2,6 @@
 // Splats kept in the order they were made, to be added to a film later: worker threads that step
 // chains in whatever order they finish leave the film's sums bit for bit as one thread stepping
 // them in turn would, when each chain's log is added in chain order.
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -15,12 +14,9 @@ class alignas(64) SplatLog {  // aligned: neighbouring chains' logs are written 
   void addSplat(const Vec2& film, const Color& value, double weight) { splats_.push_back({film, value, weight}); }
   // As Film::addSample: a sample with a non-finite value or weight is dropped whole and counted.
   bool addSample(const PathSample& sample, double weight = 1.0) {
-    if (!sample.finite() || !std::isfinite(weight)) {
-      ++dropped_;
-      return false;
-    }
-    for (const Splat& s : sample.splats) addSplat(s.film, s.value, weight);
-    return true;
+    if (addFiniteSample(*this, sample, weight)) return true;
+    ++dropped_;
+    return false;
   }
   // Adds every splat to `film` in the order made, and the dropped samples to its count: the film
   // ends as if they had been made there.
@@ -32,7 +28,6 @@ class alignas(64) SplatLog {  // aligned: neighbouring chains' logs are written 
     splats_.clear();
     dropped_ = 0;
   }
-  size_t size() const { return splats_.size(); }
 
  private:
   struct Entry {

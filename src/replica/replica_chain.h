@@ -28,12 +28,8 @@ struct LevelCounters : ChainCounters {
 // Large steps are uniform samples of primary sample space: they refine every level's b.
 struct LargeStepSums {
   explicit LargeStepSums(int levels = 0) : sum(size_t(levels), 0.0) {}
-  void add(const LargeStepSums& other) {
-    for (size_t k = 0; k < sum.size(); ++k) sum[k] += other.sum[k];
-    count += other.count;
-  }
   // One large step's targets of every level.
-  void addLargeStep(const std::vector<double>& q) {
+  void addLargeStep(const double* q) {
     for (size_t k = 0; k < sum.size(); ++k) sum[k] += q[k];
     ++count;
   }
@@ -46,27 +42,23 @@ struct DirectOutput {
   Film& film;
   LargeStepSums& large;
   void addSplat(const Vec2& p, const Color& value, double weight) { film.addSplat(p, value, weight); }
-  void addLargeStep(const std::vector<double>& q) { large.addLargeStep(q); }
+  void addLargeStep(const std::vector<double>& q) { large.addLargeStep(q.data()); }
 };
 
 // The same kept in order (a worker thread's chain), for replayInto to add once its turn comes: the
 // film and the sums then get exactly what DirectOutput would have given them.
 struct alignas(64) ChainLog {  // aligned: neighbouring chains' logs are written by different workers
   SplatLog splats;
-  std::vector<std::vector<double>> largeSteps;  // each large step's targets
-  size_t largeCount = 0;                        // of largeSteps in use (their storage is kept)
+  std::vector<double> largeSteps;  // each large step's targets of every level, one after another
   void addSplat(const Vec2& p, const Color& value, double weight) { splats.addSplat(p, value, weight); }
-  void addLargeStep(const std::vector<double>& q) {
-    if (largeCount == largeSteps.size()) largeSteps.emplace_back();
-    largeSteps[largeCount++] = q;
-  }
+  void addLargeStep(const std::vector<double>& q) { largeSteps.insert(largeSteps.end(), q.begin(), q.end()); }
   void replayInto(Film& film, LargeStepSums& large) const {
     splats.replayInto(film);
-    for (size_t i = 0; i < largeCount; ++i) large.addLargeStep(largeSteps[i]);
+    for (size_t i = 0; i < largeSteps.size(); i += large.sum.size()) large.addLargeStep(&largeSteps[i]);
   }
   void clear() {
     splats.clear();
-    largeCount = 0;
+    largeSteps.clear();
   }
 };
 
