@@ -32,4 +32,5 @@ cornell-box, pt, 8 spp|cornell-box --integrator pt --spp 8
 cornell-box, bdpt, 4 spp|cornell-box --integrator bdpt --spp 4
 glass-cube, pssmlt, 4 mutations per pixel|glass-cube --integrator pssmlt --mutations-per-pixel 4
 glass-cube, relt (kitaoka), 4 mutations per pixel|glass-cube --integrator relt --mutations-per-pixel 4
+ring, relt (tempered), 2 mutations per pixel|ring --integrator relt --family tempered --mutations-per-pixel 2
 RENDERS

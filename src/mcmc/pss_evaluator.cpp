@@ -9,10 +9,10 @@ float PssEvaluator::operator()(SampleSource& u, PathSample& out) {
   return out.target();
 }
 
-float PssEvaluator::operator()(SampleSource& u, PathSample& out, const Tempering* tempering) {
-  bdpt_.setTempering(tempering);
+float PssEvaluator::operator()(SampleSource& u, PathSample& out, ConnectionHook* hook) {
+  bdpt_.setConnectionHook(hook);
   const float target = (*this)(u, out);
-  bdpt_.setTempering(nullptr);
+  bdpt_.setConnectionHook(nullptr);
   return target;
 }
 

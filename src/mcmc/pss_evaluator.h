@@ -17,8 +17,8 @@ class PssEvaluator {
   // Fills `out` and returns I(u); 0 when the sample is not finite (it is then never splatted).
   float operator()(SampleSource& u, PathSample& out);
 
-  // The same with tempered targets (Bdpt::setTempering): the path also carries levelTargets.
-  float operator()(SampleSource& u, PathSample& out, const Tempering* tempering);
+  // The same with a hook shown every connection (Bdpt::setConnectionHook; null: none).
+  float operator()(SampleSource& u, PathSample& out, ConnectionHook* hook);
 
   // Splats carry this factor so that a uniform sample estimates every pixel (film area / pixel).
   double filmArea() const { return double(width_) * height_; }

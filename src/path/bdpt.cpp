@@ -11,7 +11,7 @@ float shadingCorrection(const SurfacePoint& sp, const Vec3& wo, const Vec3& wi) 
   return den > 0.0f ? std::abs(glm::dot(wo, sp.ns)) * std::abs(glm::dot(wi, sp.ng)) / den : 0.0f;
 }
 
-// bsdf: replaces the vertex's own (a tempered connection vertex).
+// bsdf: replaces the vertex's own (a hook's, at a connection vertex).
 Color surfaceF(const PathVertex& v, const Vec3& w, TransportMode mode, const Bsdf* bsdf = nullptr) {
   Color f = (bsdf ? *bsdf : *v.bsdf).eval(v.wo, w, mode);
   if (mode == TransportMode::Importance) f *= shadingCorrection(v.sp, v.wo, w);
@@ -140,7 +140,7 @@ void Bdpt::generateLightSubpath(SampleSource& source, size_t maxVertices) {
 void Bdpt::trace(const Vec2& film, SampleSource& source, PathSample& out) {
   generateCameraSubpath(film, source, static_cast<size_t>(ctx_.settings.maxDepth) + 1);
   generateLightSubpath(source, static_cast<size_t>(ctx_.settings.maxDepth));
-  if (tempering_) out.levelTargets.assign(size_t(tempering_->levels()), 0.0);
+  if (hook_ != nullptr) hook_->beginPath();
   const int maxDepth = ctx_.settings.maxDepth, minDepth = std::max(1, ctx_.settings.minDepth);
   for (int t = 1; t <= static_cast<int>(camera_.size()); ++t)
     for (int s = 0; s <= static_cast<int>(light_.size()); ++s) {
@@ -183,8 +183,8 @@ struct BdptConnection {
 namespace {
 
 // t = 1: light vertex l seen through the camera, splatted where it lands on the film.
-bool joinCamera(const PathContext& ctx, bool tempered, const PathVertex& l, BdptConnection& c) {
-  if (!tempered && l.isSurface() && l.delta) return false;
+bool joinCamera(const PathContext& ctx, bool smoothToo, const PathVertex& l, BdptConnection& c) {
+  if (!smoothToo && l.isSurface() && l.delta) return false;
   const Vec3 toCam = ctx.camera.position() - l.sp.p;
   const float dist2 = glm::dot(toCam, toCam);
   if (!(dist2 > 0.0f)) return false;
@@ -205,9 +205,9 @@ bool joinCamera(const PathContext& ctx, bool tempered, const PathVertex& l, Bdpt
 }
 
 // s = 1: a light point sampled for camera vertex v (next-event estimation).
-bool joinLightSample(const PathContext& ctx, bool tempered, const PathVertex& v, SampleSource& source,
+bool joinLightSample(const PathContext& ctx, bool smoothToo, const PathVertex& v, SampleSource& source,
                      BdptConnection& c) {
-  if (!tempered && v.delta) return false;
+  if (!smoothToo && v.delta) return false;
   const float uPick = source.next(SampleStream::Connection);
   const Vec2 uPos = source.next2(SampleStream::Connection);
   c.lp = ctx.lights.samplePoint(uPick, uPos);
@@ -227,8 +227,9 @@ bool joinLightSample(const PathContext& ctx, bool tempered, const PathVertex& v,
 
 // The geometry of strategy (s, t) without its end BSDFs: s = 0 the camera subpath hit an emitter,
 // t = 1 a light vertex seen by the camera, s = 1 a light point sampled for the camera end, else
-// the two subpaths' ends joined. False when it cannot contribute.
-bool joinEnds(const PathContext& ctx, bool tempered, std::span<PathVertex> light, std::span<PathVertex> camera,
+// the two subpaths' ends joined. False when it cannot contribute. smoothToo: also join at smooth
+// (delta) vertices, whose own contribution is zero (a hook may give them one).
+bool joinEnds(const PathContext& ctx, bool smoothToo, std::span<PathVertex> light, std::span<PathVertex> camera,
               const Vec2& film, SampleSource& source, BdptConnection& c) {
   const int s = int(light.size()), t = int(camera.size());
   c.splatFilm = film;
@@ -241,11 +242,11 @@ bool joinEnds(const PathContext& ctx, bool tempered, std::span<PathVertex> light
     c.cls = anyDelta(camera.subspan(1, t - 2)) ? PathClass::L0 : PathClass::L1;
     return true;
   }
-  if (t == 1) return joinCamera(ctx, tempered, light[s - 1], c);
-  if (s == 1) return joinLightSample(ctx, tempered, camera[t - 1], source, c);
+  if (t == 1) return joinCamera(ctx, smoothToo, light[s - 1], c);
+  if (s == 1) return joinLightSample(ctx, smoothToo, camera[t - 1], source, c);
   const PathVertex& l = light[s - 1];
   const PathVertex& v = camera[t - 1];
-  if (!tempered && (l.delta || v.delta)) return false;
+  if (!smoothToo && (l.delta || v.delta)) return false;
   const Vec3 d = v.sp.p - l.sp.p;
   const float dist2 = glm::dot(d, d);
   if (!(dist2 > 0.0f)) return false;
@@ -267,7 +268,7 @@ inline Color endsValue(const BdptConnection& c, const Bsdf* bL, const Bsdf* bC) 
   return v;
 }
 
-// One visibility ray for the untempered and every tempered contribution (s = light vertices).
+// One visibility ray for the path's own contribution and a hook's (s = light vertices).
 bool connectionBlocked(const PathContext& ctx, int s, const BdptConnection& c) {
   if (s == 0) return false;  // the camera subpath found the emitter itself
   if (c.cameraSpan.size() == 1) {
@@ -282,53 +283,37 @@ bool connectionBlocked(const PathContext& ctx, int s, const BdptConnection& c) {
 
 }  // namespace
 
-// Tempered levels: the end BSDFs each level uses (none: the level's contribution is the
-// untempered one) and their values. From the hottest level down: a zero there is a zero for every
-// cooler level too (same geometry, narrower lobes), which skips most connections through smooth
-// surfaces. Returns the levels filled (0: every level is untempered here); `any` is set when one
-// contributes.
-int Bdpt::temperedLevelValues(const BdptConnection& c, bool& any) {
-  auto temperable = [](const PathVertex* v) { return v && v->bsdf->material().kind != MaterialKind::Lambert; };
-  const PathVertex* tl = temperable(c.lightEnd) ? c.lightEnd : nullptr;
-  const PathVertex* tc = temperable(c.cameraEnd) ? c.cameraEnd : nullptr;
-  const int levels = tempering_ != nullptr && (tl || tc) ? tempering_->levels() : 0;
-  if (levels == 0) return 0;
-  levelValue_.assign(size_t(levels), Color(0.0f));
-  levelOwn_.assign(size_t(levels), 0);
-  levelL_.resize(size_t(levels));
-  levelC_.resize(size_t(levels));
-  bool cooler = true;  // the levels below may still contribute
-  for (int k = levels - 1; k >= 0; --k) {
-    const auto roughL = tl ? tempering_->roughness(tl->bsdf->material(), k) : std::nullopt;
-    const auto roughC = tc ? tempering_->roughness(tc->bsdf->material(), k) : std::nullopt;
-    if (!roughL && !roughC) {
-      levelOwn_[size_t(k)] = 1;
-      continue;
-    }
-    if (!cooler) continue;
-    std::optional<Bsdf>&bL = levelL_[size_t(k)], &bC = levelC_[size_t(k)];
-    bL.reset();
-    bC.reset();
-    if (roughL) bL.emplace(tl->bsdf->material(), tl->sp.ns, tl->sp.ng, *roughL);
-    if (roughC) bC.emplace(tc->bsdf->material(), tc->sp.ns, tc->sp.ng, *roughC);
-    levelValue_[size_t(k)] = endsValue(c, bL ? &*bL : nullptr, bC ? &*bC : nullptr);
-    cooler = !isBlack(levelValue_[size_t(k)]);
-    any |= cooler;
+namespace {
+
+// A connection shown to a hook: its ends and their re-evaluation with other BSDFs.
+class HookedConnection final : public ConnectionEnds {
+ public:
+  HookedConnection(const Bdpt& bdpt, const BdptConnection& c) : bdpt_(bdpt), c_(c) {}
+  const PathVertex* lightEnd() const override { return c_.lightEnd; }
+  const PathVertex* cameraEnd() const override { return c_.cameraEnd; }
+  Color value(const Bsdf* atLight, const Bsdf* atCamera) const override { return endsValue(c_, atLight, atCamera); }
+  float misWeight(const Bsdf* atLight, const Bsdf* atCamera) const override {
+    return bdpt_.misWeight(c_.lightSpan, c_.cameraSpan, atLight, atCamera);
   }
-  return levels;
-}
+
+ private:
+  const Bdpt& bdpt_;
+  const BdptConnection& c_;
+};
+
+}  // namespace
 
 // A strategy's contribution is front * f_L * f_C: f_L, f_C are the BSDFs of the surface vertices
-// the connection joins (absent at a light or camera end) and front everything else. Tempering
+// the connection joins (absent at a light or camera end) and front everything else. A hook
 // re-evaluates only those two BSDFs and the MIS weight.
 void Bdpt::connect(int s, int t, const Vec2& film, SampleSource& source, PathSample& out) {
   BdptConnection c;
   const std::span<PathVertex> light(light_.data(), size_t(s)), camera(camera_.data(), size_t(t));
-  if (!joinEnds(ctx_, tempering_ != nullptr, light, camera, film, source, c) || isBlack(c.front)) return;
+  if (!joinEnds(ctx_, hook_ != nullptr, light, camera, film, source, c) || isBlack(c.front)) return;
   const bool smoothEnd = (c.lightEnd && c.lightEnd->delta) || (c.cameraEnd && c.cameraEnd->delta);
   const Color contrib = smoothEnd ? Color(0.0f) : endsValue(c, nullptr, nullptr);
   bool any = !isBlack(contrib);
-  const int levels = tempering_ != nullptr ? temperedLevelValues(c, any) : 0;
+  if (hook_ != nullptr) any |= hook_->prepare(HookedConnection(*this, c));
   if (!any || connectionBlocked(ctx_, s, c)) return;
 
   float weight = 0.0f;
@@ -337,21 +322,7 @@ void Bdpt::connect(int s, int t, const Vec2& film, SampleSource& source, PathSam
     out.add(c.splatFilm, contrib * weight, c.cls);
     if (observer_) observer_(c.lightSpan, c.cameraSpan, weight, contrib);
   }
-  if (tempering_ == nullptr) return;
-  const double own = luminance(contrib * weight);
-  if (levels == 0) {
-    for (double& q : out.levelTargets) q += own;
-    return;
-  }
-  for (int k = 0; k < levels; ++k) {
-    const std::optional<Bsdf>&bL = levelL_[size_t(k)], &bC = levelC_[size_t(k)];
-    if (levelOwn_[size_t(k)]) {
-      out.levelTargets[size_t(k)] += own;
-    } else if (!isBlack(levelValue_[size_t(k)])) {
-      const float w = misWeight(c.lightSpan, c.cameraSpan, bL ? &*bL : nullptr, bC ? &*bC : nullptr);
-      out.levelTargets[size_t(k)] += luminance(levelValue_[size_t(k)]) * double(w);
-    }
-  }
+  if (hook_ != nullptr) hook_->add(HookedConnection(*this, c), luminance(contrib * weight));
 }
 
 float Bdpt::misWeight(std::span<PathVertex> light, std::span<PathVertex> camera, const Bsdf* lightEnd,

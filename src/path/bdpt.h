@@ -8,7 +8,7 @@
 #include "core/sample_source.h"
 #include "path/path_context.h"
 #include "path/splat.h"
-#include "path/tempering.h"
+#include "path/connection_hook.h"
 #include "path/vertex.h"
 
 namespace relt {
@@ -33,14 +33,11 @@ class Bdpt {
   // connected (multiplexed MLT). False if a subpath ended early or the connection gave nothing.
   bool traceStrategy(int s, int t, const Vec2& film, SampleSource& source, PathSample& out);
   void setObserver(ConnectionObserver observer) { observer_ = std::move(observer); }
-  // The tempered family's "evaluate all levels" (DESIGN §3.1): with a ladder set, trace() also
-  // fills out.levelTargets[k] with the luminance of every strategy's MIS-weighted contribution
-  // with its connection BSDFs tempered for level k. Strategies joined at a smooth vertex are then
-  // connected too: their one visibility ray serves every level. Null: plain BDPT.
-  void setTempering(const Tempering* tempering) { tempering_ = tempering; }
+  // trace() shows the hook every strategy's connection (path/connection_hook.h). Null: plain BDPT.
+  void setConnectionHook(ConnectionHook* hook) { hook_ = hook; }
 
   // MIS weight of strategy (s, t) for the given subpaths (densities at the connection updated
-  // internally). lightEnd / cameraEnd replace the BSDFs of the connection vertices (tempering).
+  // internally). lightEnd / cameraEnd replace the BSDFs of the connection vertices (a hook's).
   // Exposed for tests.
   float misWeight(std::span<PathVertex> light, std::span<PathVertex> camera, const Bsdf* lightEnd = nullptr,
                   const Bsdf* cameraEnd = nullptr) const;
@@ -51,18 +48,12 @@ class Bdpt {
   void generateCameraSubpath(const Vec2& film, SampleSource& source, size_t maxVertices);
   void generateLightSubpath(SampleSource& source, size_t maxVertices);
   void connect(int s, int t, const Vec2& film, SampleSource& source, PathSample& out);
-  // The tempered levels' values of one connection (bdpt.cpp).
-  int temperedLevelValues(const BdptConnection& c, bool& any);
 
   const PathContext& ctx_;
   bool roulette_ = true;
   std::vector<PathVertex> camera_, light_;
   ConnectionObserver observer_;
-  const Tempering* tempering_ = nullptr;
-  // One connection's tempered contributions and end BSDFs per level (none: the vertex's own).
-  std::vector<Color> levelValue_;
-  std::vector<uint8_t> levelOwn_;
-  std::vector<std::optional<Bsdf>> levelL_, levelC_;
+  ConnectionHook* hook_ = nullptr;
 };
 
 }  // namespace relt

@@ -26,12 +26,7 @@ struct Splat {
 
 struct PathSample {
   std::vector<Splat> splats;
-  // Tempered family only (Bdpt::setTempering): every level's target for this path.
-  std::vector<double> levelTargets;
-  void clear() {
-    splats.clear();
-    levelTargets.clear();
-  }
+  void clear() { splats.clear(); }
   void add(const Vec2& film, const Color& value, PathClass cls) {
     if (!isBlack(value) || !isFinite(value)) splats.push_back({film, value, cls});
   }

@@ -94,7 +94,7 @@ double LevelFamily::meanTarget(const FamilySettings& settings, const std::vector
   return samples ? sum / double(samples) : 0.0;
 }
 
-bool LevelFamily::features(const PathSample& sample, double* f) const {
+bool LevelFamily::features(const PathSample& sample, std::span<const double> levelTargets, double* f) const {
   const std::optional<ClassLuminance> L = classLuminance(sample);
   if (kind_ != FamilyKind::Tempered) {
     if (L) std::copy(L->begin(), L->end(), f);
@@ -102,7 +102,7 @@ bool LevelFamily::features(const PathSample& sample, double* f) const {
     return L.has_value();
   }
   for (int k = 0; k < levels(); ++k) {
-    const double q = L && size_t(k) < sample.levelTargets.size() ? sample.levelTargets[size_t(k)] : 0.0;
+    const double q = L && size_t(k) < levelTargets.size() ? levelTargets[size_t(k)] : 0.0;
     f[k] = std::isfinite(q) && q > 0.0 ? q : 0.0;  // a non-finite tempered value only loses that level
   }
   return L.has_value();

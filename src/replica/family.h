@@ -4,19 +4,20 @@
 //
 // kitaoka and relaxed are linear in the class luminances L_0..L_5 of the path's splats,
 //   q_k(u) = offset_k + sum_n d_{k,n} L_n(u);
-// tempered takes each level's target from the path builder (Bdpt with a Tempering), which
+// tempered takes each level's target from a hook on the path builder (TemperedTargets), which
 // re-evaluates the connection BSDFs per level. Either way one traced path gives every level's
 // target: the family reads a few numbers per path (its features) and maps them to targets.
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "path/splat.h"
-#include "path/tempering.h"
 #include "pss/chain_defaults.h"
 #include "pss/kelemen.h"
+#include "replica/tempering.h"
 
 namespace relt {
 
@@ -60,8 +61,9 @@ class LevelFamily {
   static int featureCount(const FamilySettings& settings);
   // The mean of I(u) over samples with the given features (count per sample: featureCount).
   static double meanTarget(const FamilySettings& settings, const std::vector<double>& features);
-  // A path's features; false (and features 0) if the path is not finite.
-  bool features(const PathSample& sample, double* f) const;
+  // A path's features; false (and features 0) if the path is not finite. levelTargets: the
+  // tempered family's, from TemperedTargets (replica/tempered_targets.h); the others take none.
+  bool features(const PathSample& sample, std::span<const double> levelTargets, double* f) const;
   // q_0..q_{M-1} of a path with the given features.
   void targets(const double* f, double* q) const;
   void targets(const ClassLuminance& L, double* q) const { targets(L.data(), q); }

@@ -19,10 +19,18 @@ void LevelCounters::add(const LevelCounters& o) {
   seconds += o.seconds;
 }
 
+LevelEvaluator::LevelEvaluator(PssEvaluator& eval, const LevelFamily& family) : eval_(eval), family_(family) {
+  if (family.tempering() != nullptr) tempered_.emplace(*family.tempering());
+}
+
+bool LevelEvaluator::features(SampleSource& u, PathSample& out, double* f) const {
+  eval_(u, out, tempered_ ? &*tempered_ : nullptr);
+  return family_.features(out, tempered_ ? tempered_->levelTargets() : std::span<const double>(), f);
+}
+
 bool LevelEvaluator::operator()(SampleSource& u, PathSample& out, double* q) const {
-  eval_(u, out, family_.tempering());
   std::array<double, kMaxLevels> f;
-  const bool finite = family_.features(out, f.data());
+  const bool finite = features(u, out, f.data());
   if (finite) {
     family_.targets(f.data(), q);
   } else {

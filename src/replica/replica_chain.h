@@ -5,6 +5,7 @@
 // level estimator with expected-value weights. Levels change only between rounds, by exchanges.
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "core/rng.h"
@@ -14,6 +15,7 @@
 #include "mcmc/pssmlt.h"
 #include "pss/primary_sample_vector.h"
 #include "replica/level_estimator.h"
+#include "replica/tempered_targets.h"
 
 namespace relt {
 
@@ -66,12 +68,16 @@ struct alignas(64) ChainLog {  // aligned: neighbouring chains' logs are written
 // Targets are all 0 when the path is not finite (never accepted, never splatted); returns false then.
 class LevelEvaluator {
  public:
-  LevelEvaluator(PssEvaluator& eval, const LevelFamily& family) : eval_(eval), family_(family) {}
+  LevelEvaluator(PssEvaluator& eval, const LevelFamily& family);
   bool operator()(SampleSource& u, PathSample& out, double* q) const;
+  // The same, giving the family's features of the path instead (LevelFamily::features).
+  bool features(SampleSource& u, PathSample& out, double* f) const;
   const LevelFamily& family() const { return family_; }
 
  private:
+  // Both are the worker's own scratch, changed by every evaluation.
   PssEvaluator& eval_;
+  mutable std::optional<TemperedTargets> tempered_;  // the tempered family only
   const LevelFamily& family_;
 };
 

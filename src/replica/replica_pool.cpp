@@ -17,13 +17,13 @@ constexpr uint64_t kExchangePurpose = 0xe8c4;
 std::vector<double> bootstrapFeatures(PssEvaluator& eval, const FamilySettings& family, uint64_t seed, int count,
                                       int first, int stride) {
   const LevelFamily f(family, 0.0);  // the features do not depend on the mean
+  const LevelEvaluator levels(eval, f);
   const size_t n = size_t(LevelFamily::featureCount(family));
   std::vector<double> out(size_t(count) * n, 0.0);
   PathSample sample;
   for (int i = first; i < count; i += stride) {
     IndependentSource u(bootstrapKey(seed, uint64_t(i)));
-    eval(u, sample, f.tempering());
-    f.features(sample, out.data() + size_t(i) * n);  // non-finite: features (hence targets) 0
+    levels.features(u, sample, out.data() + size_t(i) * n);  // non-finite: features (hence targets) 0
   }
   return out;
 }

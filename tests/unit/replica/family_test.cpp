@@ -137,13 +137,13 @@ TEST(TemperedFamily, PathFeaturesAreItsLevelTargetsAndNothingForANonFinitePath) 
   const LevelFamily f(s, 1.0);
   PathSample p;
   p.add({0.5f, 0.5f}, Color(1.0f), PathClass::L1);
-  p.levelTargets = {1.0, std::numeric_limits<double>::infinity()};
+  const std::vector<double> levelTargets = {1.0, std::numeric_limits<double>::infinity()};
   double features[2];
-  EXPECT_TRUE(f.features(p, features));
+  EXPECT_TRUE(f.features(p, levelTargets, features));
   EXPECT_EQ(features[0], 1.0);
   EXPECT_EQ(features[1], 0.0);  // a non-finite tempered value loses that level only
   p.add({0.5f, 0.5f}, Color(NAN), PathClass::L2);
-  EXPECT_FALSE(f.features(p, features));
+  EXPECT_FALSE(f.features(p, levelTargets, features));
   EXPECT_EQ(features[0], 0.0);
 }
 

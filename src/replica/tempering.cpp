@@ -1,4 +1,4 @@
-#include "path/tempering.h"
+#include "replica/tempering.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
 // Tempered connection BSDFs: which vertices a level roughens and how (DESIGN §3.1), and that the
-// path builder's per-level targets are I itself wherever a level changes nothing.
+// per-level targets the hook on the path builder sums are I itself wherever a level changes nothing.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "path/bdpt.h"
-#include "path/tempering.h"
+#include "replica/tempered_targets.h"
 #include "render/renderer.h"
 #include "scene/gltf_loader.h"
 #include "test_support.h"
@@ -32,14 +32,15 @@ Targets traceTargets(const std::string& name, const Tempering& tempering, int co
   settings.width = settings.height = 32;
   Renderer renderer(loadGltf(test::sourcePath("scenes/" + name + ".gltf")), settings);
   Bdpt bdpt(renderer.context());
-  bdpt.setTempering(&tempering);
+  TemperedTargets hook(tempering);
+  bdpt.setConnectionHook(&hook);
   Targets out;
   PathSample sample;
   for (int i = 0; i < count; ++i) {
     IndependentSource source(hashKey(31, uint64_t(i)));
     sample.clear();
     bdpt.trace(Vec2(source.next(SampleStream::Camera) * 32, source.next(SampleStream::Camera) * 32), source, sample);
-    out.q.push_back(sample.levelTargets);
+    out.q.emplace_back(hook.levelTargets().begin(), hook.levelTargets().end());
     out.target.push_back(sample.target());
   }
   return out;
