@@ -65,6 +65,7 @@ std::string unknownSubcommand(int argc, char** argv, const CLI::App& app) {
 
 struct Options {
   relt::RenderSettings render;
+  relt::SettingsDrafts drafts;  // every integrator's own settings until one is chosen
   std::string integrator = relt::kDefaultIntegrator;
   CLI::App* renderCommand = nullptr;
   std::string infoScene;
@@ -94,7 +95,7 @@ void addRenderOptions(CLI::App& cmd, Options& o) {
       ->capture_default_str();
   CLI::Option* time = cmd.add_option("--time", r.seconds, "render for this many seconds (decided collectively)")
                           ->check(kPositive);
-  relt::addIntegratorOptions(cmd, r);
+  relt::addIntegratorOptions(cmd, r, o.drafts);
   CLI::Option* spp = cmd.get_option("--spp");
   CLI::Option* mpp = cmd.get_option("--mutations-per-pixel");
   spp->excludes(time);
@@ -193,7 +194,7 @@ int runInfo(const Options& o, bool root) {
 
 // The integrator named by --integrator; an option it does not use is refused.
 void checkRenderOptions(Options& o) {
-  relt::selectIntegrator(o.render, o.integrator);
+  relt::selectIntegrator(o.render, o.integrator, &o.drafts);
   relt::validateIntegratorOptions(o.render, o.given());
 }
 

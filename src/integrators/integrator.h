@@ -1,7 +1,9 @@
 #pragma once
 // What an integrator is to the rest of relt: a name and traits (render/settings.h, IntegratorKind),
-// its own command-line options, their validation, and a render from a loaded scene to the written
-// outputs. Each integrator's folder defines one IntegratorEntry; registry.cpp lists them.
+// its own settings (render/own_settings.h) and the command-line options that write them, their
+// validation, and a render from a loaded scene to the written outputs. Each integrator's folder
+// defines one IntegratorEntry; registry.cpp lists them.
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,12 +37,20 @@ struct IntegratorEntry {
   const char* summary = "";  // one line for --help
   // The options shared by several integrators (shared_options.h) that this one takes.
   std::vector<std::string> sharedOptions;
-  // Registers the options only this integrator takes, writing into `settings` (or none).
-  void (*addOptions)(CLI::App& command, RenderSettings& settings) = nullptr;
+  // Its own settings with their defaults (or none: then it has no options of its own), and the
+  // options only it takes, registered to write into `own` (one of its makeSettings()).
+  std::unique_ptr<IntegratorSettings> (*makeSettings)() = nullptr;
+  void (*addOptions)(CLI::App& command, IntegratorSettings& own) = nullptr;
   // Completes and checks the settings after parsing; throws InputError (or none).
   void (*validate)(RenderSettings& settings, const GivenOptions& given) = nullptr;
   // Renders and, on the root, writes the outputs; collective over the job.
   void (*render)(RenderContext& context) = nullptr;
 };
+
+// An entry's makeSettings for settings of type T.
+template <class T>
+std::unique_ptr<IntegratorSettings> makeSettingsOf() {
+  return std::make_unique<T>();
+}
 
 }  // namespace relt

@@ -31,8 +31,7 @@ std::vector<const IntegratorEntry*>& entries() {
 template <typename Add>
 std::vector<std::string> optionNames(const Add& add) {
   CLI::App scratch;
-  RenderSettings settings;
-  add(scratch, settings);
+  add(scratch);
   std::vector<std::string> names;
   for (const CLI::Option* option : scratch.get_options())
     if (option->get_name() != "--help") names.push_back(option->get_name());
@@ -56,11 +55,15 @@ const OptionTable& optionTable() {
     if (entry && std::find(row->second.begin(), row->second.end(), entry) == row->second.end())
       row->second.push_back(entry);
   };
-  for (const std::string& option : optionNames(addSharedOptions)) take(option, nullptr);
+  RenderSettings scratchSettings;
+  for (const std::string& option : optionNames([&](CLI::App& cmd) { addSharedOptions(cmd, scratchSettings); }))
+    take(option, nullptr);
   for (const IntegratorEntry* entry : entries()) {
     for (const std::string& option : entry->sharedOptions) take(option, entry);
-    if (entry->addOptions)
-      for (const std::string& option : optionNames(entry->addOptions)) take(option, entry);
+    if (!entry->addOptions) continue;
+    const std::unique_ptr<IntegratorSettings> own = entry->makeSettings();
+    for (const std::string& option : optionNames([&](CLI::App& cmd) { entry->addOptions(cmd, *own); }))
+      take(option, entry);
   }
   return table;
 }
@@ -89,16 +92,23 @@ void registerIntegrator(const IntegratorEntry& entry) {
   entries().push_back(&entry);
 }
 
-void selectIntegrator(RenderSettings& settings, const std::string& name) {
+void selectIntegrator(RenderSettings& settings, const std::string& name, SettingsDrafts* drafts) {
   const IntegratorEntry* entry = findIntegrator(name);
   if (!entry) throw std::invalid_argument("no integrator named '" + name + "'");
   settings.integrator = entry->kind;
+  std::unique_ptr<IntegratorSettings> own;
+  if (drafts && drafts->count(name)) own = std::move(drafts->at(name));
+  else if (entry->makeSettings) own = entry->makeSettings();
+  settings.own = OwnSettings(std::move(own));
 }
 
-void addIntegratorOptions(CLI::App& command, RenderSettings& settings) {
+void addIntegratorOptions(CLI::App& command, RenderSettings& settings, SettingsDrafts& drafts) {
   addSharedOptions(command, settings);
-  for (const IntegratorEntry* entry : entries())
-    if (entry->addOptions) entry->addOptions(command, settings);
+  for (const IntegratorEntry* entry : entries()) {
+    if (!entry->makeSettings) continue;
+    std::unique_ptr<IntegratorSettings>& own = drafts[entry->kind.name] = entry->makeSettings();
+    if (entry->addOptions) entry->addOptions(command, *own);
+  }
 }
 
 std::vector<std::string> optionsNotForEveryIntegrator() {

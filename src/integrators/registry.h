@@ -3,6 +3,8 @@
 // configure integrators only through here. Which options an integrator takes follows from its
 // entry: the shared ones it names and the ones its folder registers; any other option of the table
 // given to it is refused by one check (unusedOptionReason).
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,11 +19,16 @@ const std::vector<const IntegratorEntry*>& integrators();
 const IntegratorEntry* findIntegrator(const std::string& name);
 // Adds an integrator after the built-in ones (a test's toy integrator); a name taken already throws.
 void registerIntegrator(const IntegratorEntry& entry);
-// The settings' integrator set to the one named `name` (throws std::invalid_argument if none is).
-void selectIntegrator(RenderSettings& settings, const std::string& name);
+// Every integrator's own settings while the command line is read: each option writes into its
+// integrator's, and selectIntegrator keeps the chosen one's.
+using SettingsDrafts = std::map<std::string, std::unique_ptr<IntegratorSettings>>;
 
-// The shared options, then every integrator's own, on the render command.
-void addIntegratorOptions(CLI::App& command, RenderSettings& settings);
+// The settings' integrator set to the one named `name`, with its own settings from `drafts` (null:
+// their defaults); throws std::invalid_argument if no integrator has that name.
+void selectIntegrator(RenderSettings& settings, const std::string& name, SettingsDrafts* drafts = nullptr);
+
+// The shared options, writing into `settings`, then every integrator's own, into its draft.
+void addIntegratorOptions(CLI::App& command, RenderSettings& settings, SettingsDrafts& drafts);
 // Why `option` (its long name) cannot be given to `integrator`, or nothing when it takes it.
 // Options no integrator names or registers (--seed, --width, ...) are taken by every integrator.
 std::optional<std::string> unusedOptionReason(const std::string& option, const IntegratorEntry& integrator);

@@ -35,6 +35,8 @@ void addSharedOptions(CLI::App& cmd, RenderSettings& r) {
          "is in view)")
       ->check(CLI::IsMember({"auto"}) | CLI::Range(0, kDirectMaxSpp))
       ->default_str("auto");
+  cmd.add_option("--trace", r.trace,
+                 "relt: write every rank's stepping time of each group round (the scaling model's input) as JSON");
 }
 
 const char* sharedOptionHint(const std::string& option) {

@@ -1,7 +1,8 @@
 #pragma once
 // The options several integrators take but not all (the budget in samples or in mutations, the
-// chain count, the Kelemen mutation's sizes, the direct-emission pass): registered once here,
-// named by each entry that takes them (integrator.h, sharedOptions).
+// chain count, the Kelemen mutation's sizes, the direct-emission pass), and outputs only some write
+// (relt's --trace): fields of RenderSettings, registered once here, named by each entry that takes
+// them (integrator.h, sharedOptions).
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 

@@ -15,12 +15,4 @@ PssmltSettings pssmltSettings(const RenderSettings& settings) {
   return ps;
 }
 
-ErptSettings erptSettings(const RenderSettings& settings) {
-  ErptSettings es;
-  es.chainLength = settings.chainLength;
-  es.sizes = KelemenSizes{settings.smallStepMin, settings.smallStepMax};
-  es.maxConsecutive = settings.erptMaxConsecutive;
-  return es;
-}
-
 }  // namespace relt

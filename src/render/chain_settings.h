@@ -1,7 +1,6 @@
 #pragma once
-// The settings each chain integrator runs with, from the render's: written once, used by the
-// executable's drivers and by the tests' in-process renders alike.
-#include "mcmc/erpt.h"
+// The settings pssmlt's and mmlt's chains run with, from the render's (erpt's and relt's are in
+// their folders).
 #include "mcmc/pssmlt.h"
 #include "render/settings.h"
 
@@ -9,7 +8,5 @@ namespace relt {
 
 // pssmlt and mmlt: the budget, the chain count for it, the large-step probability and step sizes.
 PssmltSettings pssmltSettings(const RenderSettings& settings);
-// erpt: chain length, step sizes and the consecutive-sample filter.
-ErptSettings erptSettings(const RenderSettings& settings);
 
 }  // namespace relt

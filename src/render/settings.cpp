@@ -12,13 +12,6 @@ double shortestDecimal(float v) {
   return out;
 }
 
-ReplicaSettings effectiveReplicaSettings(const RenderSettings& s) {
-  ReplicaSettings r = s.replica;
-  r.family.sizes = KelemenSizes{s.smallStepMin, s.smallStepMax};
-  r.family.largeStepProbability = s.largeStepProbability;
-  return r;
-}
-
 nlohmann::json RenderSettings::toJson() const {
   nlohmann::json j;
   j["scene"] = scenePath;

@@ -10,7 +10,7 @@
 #include "path/path_context.h"
 #include "pss/chain_defaults.h"
 #include "pss/kelemen.h"
-#include "replica/replica_settings.h"
+#include "render/own_settings.h"
 
 namespace relt {
 
@@ -39,6 +39,7 @@ struct RenderSettings {
   std::string stats;              // optional stats.json
   std::string trace;              // relt, optional: every rank's stepping time of each group round (JSON)
   IntegratorKind integrator;
+  OwnSettings own;                // the integrator's own (its folder's type; render/own_settings.h)
   std::optional<int> spp;         // samples per pixel (default when neither spp nor time: kDefaultSpp)
   std::optional<double> seconds;  // time budget
   int width = 0, height = 0;      // resolved (scene extras unless overridden)
@@ -52,12 +53,8 @@ struct RenderSettings {
   // Markov-chain integrators.
   std::optional<double> mutationsPerPixel;  // default kDefaultMutationsPerPixel
   int chains = 256;
-  int chainLength = 100;  // erpt: mutations per chain (m)
-  int erptMaxConsecutive = 0;        // erpt consecutive-sample filter (biased; 0 = off)
-  bool erptProposalFilter = false;   // erpt proposed-mutations filter (biased)
   float largeStepProbability = kDefaultLargeStepProbability;  // pssmlt, mmlt, relt
   float smallStepMin = KelemenSizes{}.s1, smallStepMax = KelemenSizes{}.s2;  // Kelemen small-step sizes
-  ReplicaSettings replica;      // relt: family, ladder, exchanges, placement
   double snapshotEvery = 0.0;  // Markov chains: write the image so far every this many seconds (0: never)
   // pssmlt, relt: estimate the directly seen emission (paths of one segment) apart, with this many
   // camera rays per pixel (a shifted (0,2)-sequence), and leave the chains the longer paths (0:
@@ -73,8 +70,5 @@ inline bool directEmissionApart(const RenderSettings& s) { return s.directSpp !=
 // A float setting as the number it was given as (0.3, not 0.30000001192092896): the shortest
 // decimal that reads back as the same float.
 double shortestDecimal(float v);
-// relt's settings with the chain options that apply to every Markov-chain integrator filled in
-// (Kelemen sizes, large-step probability).
-ReplicaSettings effectiveReplicaSettings(const RenderSettings& s);
 
 }  // namespace relt

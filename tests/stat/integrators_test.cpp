@@ -5,11 +5,12 @@
 #include <cmath>
 #include <functional>
 
+#include "integrators/registry.h"
+#include "integrators/relt/relt_settings.h"
 #include "mcmc/pssmlt.h"
 #include "render_fixture.h"
 #include "scene/gltf_loader.h"
 #include "test_support.h"
-#include "integrators/registry.h"
 
 using namespace relt;
 using namespace relt::test;
@@ -24,7 +25,7 @@ RenderSettings settingsFor(const std::string& integrator, uint64_t seed, int spp
   if (!unusedOptionReason("--mutations-per-pixel", *findIntegrator(integrator))) {  // its budget is mutations
     s.mutationsPerPixel = spp;
     s.chains = 64;
-    s.replica.ladders = 8;
+    if (integrator == "relt") replicaSettings(s).ladders = 8;
   } else {
     s.spp = spp;
   }
@@ -139,7 +140,7 @@ TEST(IntegratorAgreement, MmltAndBdptAgreeOnCornellBox) {
 // relaxed with population annealing.
 TEST(IntegratorAgreement, ReltRelaxedAndBdptAgreeOnCornellBox) {
   expectAgreementOnCornellBox("relt", "bdpt", 16, 20,
-                              [](RenderSettings& s) { s.replica.family.kind = FamilyKind::Relaxed; });
+                              [](RenderSettings& s) { replicaSettings(s).family.kind = FamilyKind::Relaxed; });
 }
 
 TEST(IntegratorAgreement, ReltDefaultAndBdptAgreeOnCornellBox) {  // kitaoka, deo
@@ -148,48 +149,48 @@ TEST(IntegratorAgreement, ReltDefaultAndBdptAgreeOnCornellBox) {  // kitaoka, de
 
 TEST(IntegratorAgreement, ReltKitaokaWithPermutationsAndBdptAgreeOnCornellBox) {
   expectAgreementOnCornellBox("relt", "bdpt", 16, 20, [](RenderSettings& s) {
-    s.replica.family.kind = FamilyKind::Kitaoka;
-    s.replica.exchange.move = ExchangeMove::Permutation;
+    replicaSettings(s).family.kind = FamilyKind::Kitaoka;
+    replicaSettings(s).exchange.move = ExchangeMove::Permutation;
   });
 }
 
 TEST(IntegratorAgreement, ReltRelaxedWithPopulationAnnealingAndBdptAgreeOnCornellBox) {
   expectAgreementOnCornellBox("relt", "bdpt", 16, 20, [](RenderSettings& s) {
-    s.replica.family.kind = FamilyKind::Relaxed;
-    s.replica.init = InitKind::Annealing;
-    s.replica.annealing.particles = 1024;
+    replicaSettings(s).family.kind = FamilyKind::Relaxed;
+    replicaSettings(s).init = InitKind::Annealing;
+    replicaSettings(s).annealing.particles = 1024;
   });
 }
 
 TEST(IntegratorAgreement, ReltTemperedAndBdptAgreeOnCornellBox) {
   expectAgreementOnCornellBox("relt", "bdpt", 16, 20,
-                              [](RenderSettings& s) { s.replica.family.kind = FamilyKind::Tempered; });
+                              [](RenderSettings& s) { replicaSettings(s).family.kind = FamilyKind::Tempered; });
 }
 
 TEST(IntegratorAgreement, ReltTemperedAndBdptAgreeOnGlossyRing) {
   expectAgreement(glossyRing(), "relt", "bdpt", 16, 20,
-                  [](RenderSettings& s) { s.replica.family.kind = FamilyKind::Tempered; });
+                  [](RenderSettings& s) { replicaSettings(s).family.kind = FamilyKind::Tempered; });
 }
 
 // With regularisation no level targets I itself: the MIS over levels must still be unbiased.
 TEST(IntegratorAgreement, ReltTemperedWithRegularisationAndBdptAgreeOnGlossyRing) {
   expectAgreement(glossyRing(), "relt", "bdpt", 16, 20, [](RenderSettings& s) {
-    s.replica.family.kind = FamilyKind::Tempered;
-    s.replica.family.regularisation = 0.1;
-    s.replica.family.regularisationDecay = 0.1;  // fast enough to move during the test's render
+    replicaSettings(s).family.kind = FamilyKind::Tempered;
+    replicaSettings(s).family.regularisation = 0.1;
+    replicaSettings(s).family.regularisationDecay = 0.1;  // fast enough to move during the test's render
   });
 }
 
 // (The parameterised furnace test above runs relt's default, kitaoka.)
 TEST(ReltFurnace, RelaxedFamilyMatchesAnalyticValueWithinOnePercent) {
   RenderSettings s = settingsFor("relt", 7, 16, 32);
-  s.replica.family.kind = FamilyKind::Relaxed;
+  replicaSettings(s).family.kind = FamilyKind::Relaxed;
   expectFurnaceWithinOnePercent(s);
 }
 
 TEST(ReltFurnace, TemperedFamilyMatchesAnalyticValueWithinOnePercent) {
   RenderSettings s = settingsFor("relt", 7, 16, 32);
-  s.replica.family.kind = FamilyKind::Tempered;
+  replicaSettings(s).family.kind = FamilyKind::Tempered;
   expectFurnaceWithinOnePercent(s);
 }
 

@@ -5,10 +5,10 @@
 
 #include "core/error.h"
 #include "core/words.h"
+#include "integrators/erpt/erpt_settings.h"
+#include "integrators/passes/pass_loop.h"
 #include "parallel/workers.h"
 #include "pss/chain_defaults.h"
-#include "render/chain_settings.h"
-#include "integrators/passes/pass_loop.h"
 
 namespace relt {
 namespace {
@@ -82,7 +82,7 @@ PassFilm erptFilm(const RenderSettings& settings) {
   const size_t pixels = size_t(settings.width) * settings.height;
   // A chain wanders out of its seed's row: the rows of a pass do not stand alone.
   return PassFilm(settings.width, settings.height, false,
-                  settings.erptProposalFilter ? pixels : 0, settings.threads);
+                  settings.own.get<ErptIntegratorSettings>().proposalFilter ? pixels : 0, settings.threads);
 }
 
 ErptOutcome runErpt(Job& job, Renderer& renderer, const RenderSettings& settings, PassFilm& film,

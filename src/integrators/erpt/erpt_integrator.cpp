@@ -5,28 +5,31 @@
 #include <cstdio>
 
 #include "integrators/erpt/erpt_driver.h"
+#include "integrators/erpt/erpt_settings.h"
 #include "integrators/output/render_outputs.h"
 #include "integrators/shared_options.h"
 
 namespace relt {
 namespace {
 
-void addErptOptions(CLI::App& cmd, RenderSettings& r) {
+void addErptOptions(CLI::App& cmd, IntegratorSettings& own) {
+  auto& r = dynamic_cast<ErptIntegratorSettings&>(own);
   cmd.add_option("--chain-length", r.chainLength, "erpt: mutations per energy-redistribution chain")
       ->check(CLI::Range(1, 1 << 20))
       ->capture_default_str();
-  cmd.add_option("--erpt-max-consecutive", r.erptMaxConsecutive,
+  cmd.add_option("--erpt-max-consecutive", r.maxConsecutive,
                  "erpt: stop depositing after this many mutations on one pixel (biased noise filter; 0 = off)")
       ->check(CLI::Range(0, 1 << 20))
       ->capture_default_str();
-  cmd.add_flag("--erpt-proposal-filter", r.erptProposalFilter,
+  cmd.add_flag("--erpt-proposal-filter", r.proposalFilter,
                "erpt: scale pixels by blurred / actual proposed mutations (biased noise filter)");
 }
 
 void addErptSettingsJson(const RenderSettings& s, nlohmann::json& j) {
-  j["chain_length"] = s.chainLength;
-  if (s.erptMaxConsecutive > 0) j["max_consecutive"] = s.erptMaxConsecutive;
-  if (s.erptProposalFilter) j["proposal_filter"] = true;
+  const auto& own = s.own.get<ErptIntegratorSettings>();
+  j["chain_length"] = own.chainLength;
+  if (own.maxConsecutive > 0) j["max_consecutive"] = own.maxConsecutive;
+  if (own.proposalFilter) j["proposal_filter"] = true;
   j["small_step"] = smallStepJson(s);
 }
 
@@ -71,6 +74,7 @@ const IntegratorEntry& erptIntegrator() {
     e.kind.settingsJson = addErptSettingsJson;
     e.summary = "energy redistribution path tracing";
     e.sharedOptions = {"--spp", "--small-step-min", "--small-step-max"};
+    e.makeSettings = makeSettingsOf<ErptIntegratorSettings>;
     e.addOptions = addErptOptions;
     e.render = renderErpt;
     return e;

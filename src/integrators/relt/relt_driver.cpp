@@ -12,6 +12,7 @@
 #include "checkpoint/checkpoint.h"
 #include "core/clock.h"
 #include "core/error.h"
+#include "integrators/relt/relt_settings.h"
 #include "mcmc/round_schedule.h"
 #include "parallel/workers.h"
 #include "replica/replica_schedule.h"

@@ -4,6 +4,7 @@
 
 #include "integrators/relt/relt_options.h"
 #include "integrators/relt/relt_render.h"
+#include "integrators/relt/relt_settings.h"
 
 namespace relt {
 
@@ -15,7 +16,8 @@ const IntegratorEntry& reltIntegrator() {
     e.kind.settingsJson = addReltSettingsJson;
     e.summary = "replica exchange light transport";
     e.sharedOptions = {"--mutations-per-pixel", "--large-step-probability", "--small-step-min", "--small-step-max",
-                       "--direct-emission-spp"};
+                       "--direct-emission-spp", "--trace"};
+    e.makeSettings = makeSettingsOf<ReltSettings>;
     e.addOptions = addReltOptions;
     e.validate = validateReltOptions;
     e.render = [](RenderContext& c) { renderDirectThenChains(c, renderRelt); };

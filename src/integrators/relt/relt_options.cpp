@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "image/image.h"
 #include "integrators/option_checks.h"
+#include "integrators/relt/relt_settings.h"
 #include "integrators/shared_options.h"
 #include "replica/permutation.h"
 
@@ -17,8 +18,7 @@ bool isGiven(const GivenOptions& given, const std::string& option) {
 }
 
 // The ladder: its target family, levels and ladders, and where first states come from.
-void addLadderOptions(CLI::App& cmd, RenderSettings& s) {
-  ReplicaSettings& r = s.replica;
+void addLadderOptions(CLI::App& cmd, ReplicaSettings& r) {
   cmd.add_option_function<std::string>(
          "--family", [&r](const std::string& v) { r.family.kind = *parseFamily(v); }, "relt: target family of the levels")
       ->check(CLI::IsMember({"kitaoka", "relaxed", "tempered"}))
@@ -43,8 +43,7 @@ void addLadderOptions(CLI::App& cmd, RenderSettings& s) {
 }
 
 // The exchanges between levels, the normalisers' lag and where chains run.
-void addExchangeOptions(CLI::App& cmd, RenderSettings& s) {
-  ReplicaSettings& r = s.replica;
+void addExchangeOptions(CLI::App& cmd, ReplicaSettings& r) {
   cmd.add_option_function<std::string>(
          "--exchange", [&r](const std::string& v) { r.exchange.move = *parseExchangeMove(v); },
          "relt: exchange move between levels")
@@ -77,13 +76,10 @@ void addExchangeOptions(CLI::App& cmd, RenderSettings& s) {
   cmd.add_option("--energy-rings", r.exchange.energyRings, "relt eem: number of energy rings (0: one per level)")
       ->check(CLI::Range(0, 1024))
       ->capture_default_str();
-  cmd.add_option("--trace", s.trace,
-                 "relt: write every rank's stepping time of each group round (the scaling model's input) as JSON");
 }
 
 // Each family's own parameters.
-void addFamilyOptions(CLI::App& cmd, RenderSettings& s) {
-  FamilySettings& f = s.replica.family;
+void addFamilyOptions(CLI::App& cmd, FamilySettings& f) {
   cmd.add_option("--relaxed-eps", f.relaxedEps1, "relt relaxed: eps_1 as a multiple of the mean of I")
       ->check(positiveNumber())
       ->capture_default_str();
@@ -107,14 +103,15 @@ void addFamilyOptions(CLI::App& cmd, RenderSettings& s) {
 
 }  // namespace
 
-void addReltOptions(CLI::App& cmd, RenderSettings& s) {
-  addLadderOptions(cmd, s);
-  addExchangeOptions(cmd, s);
-  addFamilyOptions(cmd, s);
+void addReltOptions(CLI::App& cmd, IntegratorSettings& own) {
+  ReplicaSettings& r = dynamic_cast<ReltSettings&>(own).replica;
+  addLadderOptions(cmd, r);
+  addExchangeOptions(cmd, r);
+  addFamilyOptions(cmd, r.family);
 }
 
 void validateReltOptions(RenderSettings& s, const GivenOptions& given) {
-  ReplicaSettings& r = s.replica;
+  ReplicaSettings& r = replicaSettings(s);
   const std::pair<const char*, FamilyKind> owner[] = {
       {"--relaxed-eps", FamilyKind::Relaxed},     {"--relaxed-ratio", FamilyKind::Relaxed},
       {"--kitaoka-delta", FamilyKind::Kitaoka},   {"--temperature-max", FamilyKind::Tempered},
@@ -133,7 +130,7 @@ void validateReltOptions(RenderSettings& s, const GivenOptions& given) {
 }
 
 void addReltSettingsJson(const RenderSettings& s, nlohmann::json& j) {
-  const ReplicaSettings& r = s.replica;
+  const ReplicaSettings& r = replicaSettings(s);
   j["family"] = familyName(r.family.kind);
   switch (r.family.kind) {
     case FamilyKind::Relaxed:

@@ -8,7 +8,7 @@
 
 namespace relt {
 
-void addReltOptions(CLI::App& command, RenderSettings& settings);
+void addReltOptions(CLI::App& command, IntegratorSettings& own);
 // Family options belong to their family; kitaoka's four levels are fixed; permutation's cost
 // bounds its levels; the levels' layers need an EXR. Throws InputError.
 void validateReltOptions(RenderSettings& settings, const GivenOptions& given);

@@ -5,6 +5,7 @@
 
 #include "integrators/output/render_outputs.h"
 #include "integrators/relt/relt_driver.h"
+#include "integrators/relt/relt_settings.h"
 
 namespace relt {
 namespace {
@@ -57,7 +58,7 @@ void renderRelt(RenderContext& c, const DirectEstimate& direct, Clock::time_poin
   Job& job = c.job;
   const RenderSettings& settings = c.settings;
   const Resumed* resumed = c.resumed ? &*c.resumed : nullptr;
-  const bool layers = settings.replica.perLevel;
+  const bool layers = replicaSettings(settings).perLevel;
   std::vector<Film> films;
   int snapshots = 0;
   const ReltOutcome o = runRelt(job, c.renderer, chainSettings(settings, direct), films,

@@ -8,9 +8,10 @@
 #include "checkpoint/checkpoint.h"
 #include "core/error.h"
 #include "core/words.h"
+#include "integrators/registry.h"
+#include "integrators/relt/relt_settings.h"
 #include "replica/replica_schedule.h"
 #include "test_support.h"
-#include "integrators/registry.h"
 
 using namespace relt;
 
@@ -122,7 +123,7 @@ TEST(CheckpointFile, TheIdentityIgnoresBudgetsAndOutputsButNotWhatShapesTheImage
   b.output = "b.exr";
   b.mutationsPerPixel = 64;
   b.snapshotEvery = 10;
-  b.replica.placement = Placement::Packed;
+  replicaSettings(b).placement = Placement::Packed;
   b.threads = 2;
   EXPECT_EQ(imageIdentity(a, "d1"), imageIdentity(b, "d1"));
   EXPECT_NO_THROW(checkSameRender(imageIdentity(a, "d1"), imageIdentity(b, "d1"), "f"));
@@ -133,7 +134,7 @@ TEST(CheckpointFile, TheIdentityIgnoresBudgetsAndOutputsButNotWhatShapesTheImage
   EXPECT_NE(errorOf([&] { checkSameRender(imageIdentity(a, "d1"), imageIdentity(a, "d2"), "f"); }).find("another scene"),
             std::string::npos);
   b = a;
-  b.replica.family.kind = FamilyKind::Tempered;
+  replicaSettings(b).family.kind = FamilyKind::Tempered;
   EXPECT_NE(errorOf([&] { checkSameRender(imageIdentity(a, "d1"), imageIdentity(b, "d1"), "f"); }).find("family"),
             std::string::npos);
 }

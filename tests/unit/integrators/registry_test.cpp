@@ -7,6 +7,8 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "integrators/erpt/erpt_settings.h"
+#include "integrators/relt/relt_settings.h"
 
 #include "test_support.h"
 
@@ -41,6 +43,23 @@ TEST(Registry, SelectingAnIntegratorSetsItsKind) {
   s.directSpp = kDirectSppAuto;
   EXPECT_FALSE(directEmissionApart(s));
   EXPECT_EQ(s.toJson().at("chains"), s.chains);
+}
+
+// Each option writes into its own integrator's draft; the chosen integrator keeps its draft, and
+// without drafts its own settings' defaults.
+TEST(Registry, TheChosenIntegratorKeepsItsOwnSettingsFromTheCommandLine) {
+  CLI::App command;
+  RenderSettings s;
+  SettingsDrafts drafts;
+  addIntegratorOptions(command, s, drafts);
+  command.parse(std::vector<std::string>{"3", "--levels", "50", "--chain-length"});  // reversed
+  selectIntegrator(s, "erpt", &drafts);
+  EXPECT_EQ(s.own.get<ErptIntegratorSettings>().chainLength, 50);
+  EXPECT_THROW(replicaSettings(s), std::logic_error);
+  selectIntegrator(s, "relt", &drafts);
+  EXPECT_EQ(replicaSettings(s).family.levels, 3);
+  selectIntegrator(s, "relt");
+  EXPECT_EQ(replicaSettings(s).family.levels, ReplicaSettings{}.family.levels);
 }
 
 TEST(Registry, AnOptionIsRefusedOnlyWhereItIsUnused) {

@@ -21,11 +21,14 @@
 namespace relt {
 namespace {
 
-// Every pixel the same grey, set by --grey (the toy has no settings of its own in RenderSettings).
-double toyGrey = 0.5;
+// Every pixel the same grey, set by --grey.
+struct ToySettings final : SettingsOf<ToySettings> {
+  double grey = 0.5;
+};
 
-void addToyOptions(CLI::App& cmd, RenderSettings&) {
-  cmd.add_option("--grey", toyGrey, "constant: the grey of every pixel")->check(CLI::Range(0.0, 1e6));
+void addToyOptions(CLI::App& cmd, IntegratorSettings& own) {
+  cmd.add_option("--grey", dynamic_cast<ToySettings&>(own).grey, "constant: the grey of every pixel")
+      ->check(CLI::Range(0.0, 1e6));
 }
 
 void validateToy(RenderSettings& settings, const GivenOptions& given) {
@@ -38,7 +41,7 @@ void renderToy(RenderContext& c) {
   const Gathered g = gatherAfterRender(c.job, start, c.renderer, none);
   if (!c.job.isRoot()) return;
   Image image(c.settings.width, c.settings.height);
-  for (float& v : image.rgb) v = float(toyGrey);
+  for (float& v : image.rgb) v = float(c.settings.own.get<ToySettings>().grey);
   writeOutputs(c.settings, image, commonStats(c.settings, c.job, g, image), c.wallStart);
 }
 
@@ -46,8 +49,9 @@ const IntegratorEntry& constantIntegrator() {
   static const IntegratorEntry entry = [] {
     IntegratorEntry e;
     e.kind.name = "constant";
-    e.kind.settingsJson = [](const RenderSettings&, nlohmann::json& j) { j["grey"] = toyGrey; };
+    e.kind.settingsJson = [](const RenderSettings& s, nlohmann::json& j) { j["grey"] = s.own.get<ToySettings>().grey; };
     e.summary = "a constant grey (a test's toy)";
+    e.makeSettings = makeSettingsOf<ToySettings>;
     e.addOptions = addToyOptions;
     e.validate = validateToy;
     e.render = renderToy;
@@ -60,12 +64,13 @@ const IntegratorEntry& constantIntegrator() {
 RenderSettings parsed(std::vector<std::string> args) {
   CLI::App command;
   RenderSettings settings;
+  SettingsDrafts drafts;
   std::string integrator;
   command.add_option("--integrator", integrator);
-  addIntegratorOptions(command, settings);
+  addIntegratorOptions(command, settings, drafts);
   std::reverse(args.begin(), args.end());
   command.parse(args);
-  selectIntegrator(settings, integrator);
+  selectIntegrator(settings, integrator, &drafts);
   GivenOptions given;
   for (const CLI::Option* option : command.get_options())
     if (option->count() > 0 && option->get_name() != "--integrator") given.push_back(option->get_name());
@@ -85,7 +90,7 @@ TEST(ToyIntegrator, OneRegistryLineAddsItWithItsOptionsAndItRendersThroughRunRen
   EXPECT_THROW(parsed({"--integrator", "constant", "--spp", "4"}), InputError);
 
   RenderSettings settings = parsed({"--integrator", "constant", "--grey", "0.25"});
-  EXPECT_EQ(toyGrey, 0.25);
+  EXPECT_EQ(settings.own.get<ToySettings>().grey, 0.25);
   const std::string dir = test::makeTempDir("toy-integrator");
   settings.scenePath = test::sourcePath("scenes/furnace.gltf");
   settings.output = dir + "/constant.exr";

@@ -117,26 +117,28 @@ void checkScene(const std::string& name, MisHeuristic heuristic, bool roulette =
   if (name == "glass-cube") EXPECT_GT(withDelta, 0) << "glass-cube paths should cross smooth glass";
 }
 
-// Tempered weights (the tempered family's targets): with the connection vertices' BSDFs replaced
-// by roughened ones, the renderer's weight equals the brute-force weight of the path whose two
-// connection vertices carry those BSDFs for every strategy. ring with glossy metals, so that
-// connections at metal vertices exist untempered and are observed.
+// A glossy or smooth vertex's BSDF roughened by `scale` (smooth ones as Beckmann 1e-4 first), as a
+// connection hook may put at the ends (relt's tempered levels); none for a diffuse vertex.
+std::optional<Bsdf> roughened(const PathVertex& v, float scale) {
+  if (!v.isSurface() || v.bsdf->material().kind == MaterialKind::Lambert) return std::nullopt;
+  const Material& m = v.bsdf->material();
+  const bool smooth = m.alpha <= 0.0f;
+  return Bsdf(m, v.sp.ns, v.sp.ng, Roughness{scale * (smooth ? 1e-4f : m.alpha), smooth ? Microfacet::Beckmann : m.distribution});
+}
+
+// Weights with other end BSDFs (what a connection hook asks for): with the connection vertices'
+// BSDFs replaced by roughened ones, the renderer's weight equals the brute-force weight of the
+// path whose two connection vertices carry those BSDFs for every strategy. ring with glossy
+// metals, so that connections at metal vertices exist unchanged and are observed.
 void checkTemperedWeights(float scale) {
   RenderSettings settings;
   settings.width = settings.height = 32;
   Renderer renderer(test::glossyRing(), settings);
   Bdpt bdpt(renderer.context());
-  Tempering tempering;
-  tempering.scale = {scale};
   int checked = 0;
   bdpt.setObserver([&](std::span<const PathVertex> light, std::span<const PathVertex> camera, float, const Color&) {
     std::vector<PathVertex> l(light.begin(), light.end()), c(camera.begin(), camera.end());
-    auto tempered = [&](const PathVertex& v) -> std::optional<Bsdf> {
-      if (!v.isSurface()) return std::nullopt;
-      const auto rough = tempering.roughness(v.bsdf->material(), 0);
-      if (!rough) return std::nullopt;
-      return Bsdf(v.bsdf->material(), v.sp.ns, v.sp.ng, *rough);
-    };
+    auto tempered = [&](const PathVertex& v) { return roughened(v, scale); };
     const std::optional<Bsdf> bL = l.empty() ? std::nullopt : tempered(l.back());
     const std::optional<Bsdf> bC = tempered(c.back());
     if (!bL && !bC) return;
