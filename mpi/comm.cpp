@@ -151,7 +151,7 @@ double allreduceMax(double value) {
   return out;
 }
 
-Agreement agree(double elapsed) {
+JobAgreement agree(double elapsed) {
   double mine[3] = {elapsed, stopSignalled() ? 1.0 : 0.0, takeSaveRequest() ? 1.0 : 0.0}, all[3];
   timed([&] { MPI_Allreduce(mine, all, 3, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD); });
   if (all[1] > 0.0) markStopAgreed();

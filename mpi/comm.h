@@ -45,8 +45,7 @@ uint64_t allreduceSum(uint64_t value);
 int allreduceMax(int value);
 // The ranks' agreement after a pass or round (Job::agree); a stop agreed makes stopAgreed() in
 // interrupt.h hold from here on.
-using Agreement = JobAgreement;
-Agreement agree(double elapsed);
+JobAgreement agree(double elapsed);
 // Wall-clock seconds spent inside collectives by this rank, accumulated by the functions above.
 double collectiveSeconds();
 

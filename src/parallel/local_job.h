@@ -1,11 +1,12 @@
 #pragma once
 // A job of one process: every collective is the identity (a sum over one rank is its value). For
-// tests, which render through the integrators' own code without MPI, and for requests a test makes.
+// tests, which render through the integrators' own code without MPI, and for requests a test makes
+// (a test may also script collectives by overriding them: tests/support/scripted_job.h).
 #include "parallel/job.h"
 
 namespace relt {
 
-class LocalJob final : public Job {
+class LocalJob : public Job {
  public:
   int rank() const override { return 0; }
   int size() const override { return 1; }

@@ -8,19 +8,17 @@
 #include "schedule/schedule.h"
 
 namespace relt {
-
 namespace {
 
-
-// Extends the pass over rays [done, end) of every pixel, when the ranks agree between chunks, in
-// chunks, agreeing on stop and save requests after each. A chunk's size follows the slowest rank's
-// time for the last one; the film does not depend on it (rays in two ranges sum to the film of one).
+// Extends the pass over rays [done, end) of every pixel in chunks, the ranks agreeing on stop and
+// save requests after each. A chunk's size follows the slowest rank's time for the last one; the
+// film does not depend on it (rays in two ranges sum to the film of one).
 struct ChunkedPass {
   Renderer& renderer;
-  int firstRow, rowStride;
+  Job& job;
   Film& film;
-  const RankReduce& reduce;
-  double earlier;       // seconds of the render this one continues
+  const DirectChunkDone& chunkDone;
+  double earlier;  // seconds of the render this one continues
   Clock::time_point start;
   uint32_t done = 0, chunk = uint32_t(kDirectProbeSpp);
   double agreed = earlier;  // the slowest rank's elapsed seconds after the last chunk
@@ -28,45 +26,44 @@ struct ChunkedPass {
 
   bool extendTo(uint32_t end) {
     while (done < end && !stopped) {
-      const uint32_t next = reduce.agree ? std::min(end, done + chunk) : end;
-      renderer.renderDirect(firstRow, rowStride, film, done, next);
+      const uint32_t next = std::min(end, done + chunk);
+      renderer.renderDirect(job.rank(), job.size(), film, done, next);
       const uint32_t taken = next - done;
       done = next;
-      if (!reduce.agree) break;
       const double before = agreed;
-      const ChunkAgreement a = reduce.agree(earlier + secondsSince(start));
+      const JobAgreement a = job.agree(earlier + secondsSince(start));
       agreed = a.elapsed;
       chunk = nextDirectChunk(taken, agreed - before);
       stopped = a.stop;
-      if (reduce.chunkDone) reduce.chunkDone(DirectPass{int(done), agreed, stopped}, a.save || a.stop);
+      if (chunkDone) chunkDone(DirectPass{int(done), agreed, stopped}, a.save || a.stop);
     }
     return !stopped;
   }
-  double elapsed() const { return reduce.max(earlier + secondsSince(start)); }
+  double elapsed() const { return job.allreduceMax(earlier + secondsSince(start)); }
 };
 
 // Whether any rank's probe rays saw emission (a NaN sum was dropped by the film).
-bool probeSeesEmission(Renderer& renderer, int firstRow, int rowStride, const RankReduce& reduce) {
+bool probeSeesEmission(Renderer& renderer, Job& job) {
   const RenderSettings& s = renderer.settings();
   Film probe(s.width, s.height);
-  renderer.renderDirect(firstRow, rowStride, probe, 0, uint32_t(kDirectProbeSpp), true);
+  renderer.renderDirect(job.rank(), job.size(), probe, 0, uint32_t(kDirectProbeSpp), true);
   double seen = 0.0;
   for (double v : probe.data()) seen += v;
-  return reduce.sum(seen) > 0.0;
+  return job.allreduceSum(seen) > 0.0;
 }
 
 }  // namespace
 
-DirectPass renderDirectPass(Renderer& renderer, int firstRow, int rowStride, Film& film, const RankReduce& reduce,
-                            const DirectPassStart& start) {
+DirectPass renderDirectPass(Renderer& renderer, Job& job, Film& film, const DirectPassStart& start,
+                            const DirectChunkDone& chunkDone) {
   const RenderSettings& s = renderer.settings();
   DirectPass out;
   if (!directEmissionApart(s)) return out;
-  ChunkedPass pass{renderer, firstRow, rowStride, film, reduce, start.seconds, Clock::now()};
+  ChunkedPass pass{renderer, job, film, chunkDone, start.seconds, Clock::now()};
   pass.done = uint32_t(start.spp);
   const bool automatic = s.directSpp == kDirectSppAuto;
   const int fixed = !automatic ? s.directSpp : s.seconds ? 0 : autoDirectSpp(s.mutationsPerPixel.value_or(kDefaultMutationsPerPixel));
-  if (automatic && start.spp == 0 && !probeSeesEmission(renderer, firstRow, rowStride, reduce)) {  // none in view
+  if (automatic && start.spp == 0 && !probeSeesEmission(renderer, job)) {  // none in view
     renderer.keepDirectEmissionInChains();
     out.seconds = pass.elapsed();
     return out;

@@ -109,13 +109,8 @@ DirectEstimate directEmission(Job& job, Renderer& renderer, const RenderSettings
     }
   }
   PassSaver saver{job, settings, plan, snapshot, out, start.seconds};
-  RankReduce reduce{[&job](double v) { return job.allreduceMax(v); }, [&job](double v) { return job.allreduceSum(v); }};
-  reduce.agree = [&job](double elapsed) {
-    const JobAgreement a = job.agree(elapsed);
-    return ChunkAgreement{a.elapsed, a.stop, a.save};
-  };
-  reduce.chunkDone = [&](const DirectPass& sofar, bool save) { saver.chunkDone(sofar, save); };
-  const DirectPass pass = renderDirectPass(renderer, job.rank(), job.size(), out.film, reduce, start);
+  const DirectPass pass = renderDirectPass(renderer, job, out.film, start,
+                                           [&](const DirectPass& sofar, bool save) { saver.chunkDone(sofar, save); });
   if (saver.lastPrint > 0.0 && saver.tty) std::fprintf(stderr, "\n");
   out.image = reducedImage(job, out.film, pass.spp);
   out.spp = pass.spp;

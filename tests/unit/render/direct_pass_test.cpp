@@ -1,19 +1,22 @@
 // The direct-emission pass of pssmlt and relt: its size on auto, the probe that drops it when no
 // emitter is in view, and the doublings of a timed render (render/direct_pass.h, schedule/schedule.h).
+// The other ranks are played by a job whose collectives the tests script (ScriptedJob).
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <deque>
 #include <fstream>
 
+#include "../scene/gltf_test_support.h"
+#include "integrators/registry.h"
+#include "parallel/local_job.h"
 #include "render/direct_pass.h"
 #include "schedule/schedule.h"
 #include "scene/gltf_loader.h"
+#include "scripted_job.h"
 #include "test_support.h"
-#include "../scene/gltf_test_support.h"
-#include "integrators/registry.h"
 
 using namespace relt;
+using relt::test::ScriptedJob;
 
 namespace {
 
@@ -25,29 +28,6 @@ RenderSettings small(int directSpp) {
   s.seed = 5;
   s.directSpp = directSpp;
   return s;
-}
-
-const RankReduce kOneRank{[](double v) { return v; }, [](double v) { return v; }};
-
-// One rank that is asked to stop (or to save) when the pass's `chunk`-th agreement comes.
-RankReduce askedAtChunk(int chunk, bool stop) {
-  RankReduce r = kOneRank;
-  r.agree = [chunk, stop, asked = 0](double elapsed) mutable {
-    const bool now = ++asked == chunk;
-    return ChunkAgreement{elapsed, stop && now, !stop && now};
-  };
-  return r;
-}
-RankReduce stopsAtChunk(int chunk) { return askedAtChunk(chunk, true); }
-
-// One rank whose every max over ranks (the slowest rank's time) comes from `times`, in turn.
-RankReduce slowestRankTimes(std::deque<double>& times) {
-  return {[&times](double) {
-            const double t = times.front();
-            times.pop_front();
-            return t;
-          },
-          [](double v) { return v; }};
 }
 
 double filmSum(const Film& film) {
@@ -91,7 +71,8 @@ TEST(DirectPass, RaysInTwoRangesSumToTheSameFilmAsInOne) {
 TEST(DirectPass, AGivenCountIsTakenAsItIs) {
   Renderer renderer(withoutLightInView(), small(8));
   Film film(12, 10);
-  EXPECT_EQ(renderDirectPass(renderer, 0, 1, film, kOneRank).spp, 8);
+  LocalJob one;
+  EXPECT_EQ(renderDirectPass(renderer, one, film).spp, 8);
   EXPECT_EQ(renderer.context().settings.minDepth, 2) << "asked for: kept even with nothing in view";
 }
 
@@ -100,7 +81,8 @@ TEST(DirectPass, AutoWithAFixedBudgetTakesAutoDirectSpp) {
   s.mutationsPerPixel = 40;
   Renderer renderer(withLightInView(), s);
   Film film(12, 10), expected(12, 10);
-  EXPECT_EQ(renderDirectPass(renderer, 0, 1, film, kOneRank).spp, autoDirectSpp(40));
+  LocalJob one;
+  EXPECT_EQ(renderDirectPass(renderer, one, film).spp, autoDirectSpp(40));
   EXPECT_EQ(renderer.context().settings.minDepth, 2);
   renderer.renderDirect(0, 1, expected, 0, uint32_t(autoDirectSpp(40)));
   EXPECT_EQ(film.data(), expected.data());
@@ -110,7 +92,8 @@ TEST(DirectPass, AutoWithNoEmitterInViewHandsThatEmissionBackToTheChains) {
   Renderer renderer(withoutLightInView(), small(kDirectSppAuto));
   ASSERT_EQ(renderer.context().settings.minDepth, 2);
   Film film(12, 10);
-  const DirectPass pass = renderDirectPass(renderer, 0, 1, film, kOneRank);
+  LocalJob one;
+  const DirectPass pass = renderDirectPass(renderer, one, film);
   EXPECT_EQ(pass.spp, 0);
   EXPECT_EQ(renderer.context().settings.minDepth, 1);
   EXPECT_FALSE(directEmissionApart(renderer.settings()));
@@ -119,23 +102,24 @@ TEST(DirectPass, AutoWithNoEmitterInViewHandsThatEmissionBackToTheChains) {
 
 TEST(DirectPass, AutoOnAnotherRankSeeingTheEmitterKeepsThePass) {
   Renderer renderer(withoutLightInView(), small(kDirectSppAuto));
-  const RankReduce othersSeeIt{[](double v) { return v; }, [](double v) { return v + 1.0; }};
+  ScriptedJob othersSeeIt;
+  othersSeeIt.othersAdd = 1.0;
   Film film(12, 10);
-  EXPECT_EQ(renderDirectPass(renderer, 0, 1, film, othersSeeIt).spp, autoDirectSpp(16));
+  EXPECT_EQ(renderDirectPass(renderer, othersSeeIt, film).spp, autoDirectSpp(16));
   EXPECT_EQ(renderer.context().settings.minDepth, 2);
 }
 
 TEST(DirectPass, AutoWithATimeBudgetDoublesWhileTheSlowestRankStaysWithinTheShare) {
   RenderSettings s = small(kDirectSppAuto);
   s.seconds = 100.0;  // share: 6 s; the slowest rank's times at 16, 32 and 64 rays per pixel:
-  std::deque<double> slowest = {1.0, 2.0, 4.0, 4.0};
-  const RankReduce scripted = slowestRankTimes(slowest);
+  ScriptedJob slowest;
+  slowest.maxima = {1.0, 2.0, 4.0, 4.0};
   Renderer renderer(withLightInView(), s);
   Film film(12, 10);
-  const DirectPass pass = renderDirectPass(renderer, 0, 1, film, scripted);
+  const DirectPass pass = renderDirectPass(renderer, slowest, film);
   EXPECT_EQ(pass.spp, 4 * kDirectMinSpp);  // 2 x 1 and 2 x 2 fit in 6 s, 2 x 4 does not
   EXPECT_EQ(pass.seconds, 4.0);
-  EXPECT_TRUE(slowest.empty());
+  EXPECT_TRUE(slowest.maxima.empty());
 }
 
 // A lamp seen far away covers a tenth of the only pixel. The probe sees it in some renders and not
@@ -163,7 +147,8 @@ TEST(DirectPass, ThePassIsUnbiasedWhereTheProbeDecidedItRuns) {
     s.mutationsPerPixel = 8;  // autoDirectSpp: 16 rays
     Renderer renderer(scene, s);
     Film film(1, 1);
-    const DirectPass pass = renderDirectPass(renderer, 0, 1, film, kOneRank);
+    LocalJob one;
+    const DirectPass pass = renderDirectPass(renderer, one, film);
     if (pass.spp == 0) continue;
     ASSERT_EQ(pass.spp, 16);
     const double v = film.data()[1] / pass.spp;  // green
@@ -183,7 +168,9 @@ TEST(DirectPass, AStopRequestEndsThePassBetweenChunksWithEveryPixelAlike) {
   RenderSettings s = small(1 << 14);
   Renderer renderer(withLightInView(), s);
   Film film(12, 10);
-  const DirectPass pass = renderDirectPass(renderer, 0, 1, film, stopsAtChunk(3));
+  ScriptedJob stopsAtTheThird;
+  stopsAtTheThird.stopAt = 3;
+  const DirectPass pass = renderDirectPass(renderer, stopsAtTheThird, film);
   EXPECT_TRUE(pass.stopped);
   // Chunks of 4, then at most 4 times the last (each takes far less than the aimed 0.1 s): 4 + 16 + 64.
   EXPECT_EQ(pass.spp, 4 + 16 + 64);
@@ -198,16 +185,20 @@ TEST(DirectPass, AResumedPassEndsOnTheFilmOfOneThatNeverStopped) {
   RenderSettings s = small(256);
   Renderer whole(withLightInView(), s);
   Film expected(12, 10);
-  ASSERT_EQ(renderDirectPass(whole, 0, 1, expected, kOneRank).spp, 256);
+  LocalJob one;
+  ASSERT_EQ(renderDirectPass(whole, one, expected).spp, 256);
 
   Renderer first(withLightInView(), s);
   Film film(12, 10);
-  const DirectPass stopped = renderDirectPass(first, 0, 1, film, stopsAtChunk(2));
+  ScriptedJob stopsAtTheSecond;
+  stopsAtTheSecond.stopAt = 2;
+  const DirectPass stopped = renderDirectPass(first, stopsAtTheSecond, film);
   ASSERT_TRUE(stopped.stopped);
   ASSERT_EQ(stopped.spp, 4 + 16);
 
   Renderer resumed(withLightInView(), s);
-  const DirectPass pass = renderDirectPass(resumed, 0, 1, film, kOneRank, {stopped.spp, stopped.seconds});
+  LocalJob again;
+  const DirectPass pass = renderDirectPass(resumed, again, film, {stopped.spp, stopped.seconds});
   EXPECT_EQ(pass.spp, 256);
   EXPECT_FALSE(pass.stopped);
   EXPECT_EQ(film.data(), expected.data());
@@ -219,15 +210,15 @@ TEST(DirectPass, AResumedPassEndsOnTheFilmOfOneThatNeverStopped) {
 TEST(DirectPass, AResumedTimedPassEndsTheDoublingItWasStoppedIn) {
   RenderSettings s = small(kDirectSppAuto);
   s.seconds = 100.0;  // share: 6 s
-  std::deque<double> slowest = {2.0, 4.0, 4.0};
-  const RankReduce scripted = slowestRankTimes(slowest);
+  ScriptedJob slowest;
+  slowest.maxima = {2.0, 4.0, 4.0};
   Renderer renderer(withLightInView(), s);
   Film film(12, 10);
   renderer.renderDirect(0, 1, film, 0, 20);
-  const DirectPass pass = renderDirectPass(renderer, 0, 1, film, scripted, {20, 1.5});
+  const DirectPass pass = renderDirectPass(renderer, slowest, film, {20, 1.5});
   EXPECT_EQ(pass.spp, 64);  // to 32, doubled at 2 s, not at 4 s
   EXPECT_EQ(pass.seconds, 4.0);
-  EXPECT_TRUE(slowest.empty());
+  EXPECT_TRUE(slowest.maxima.empty());
   Film expected(12, 10);
   renderer.renderDirect(0, 1, expected, 0, 64);
   EXPECT_EQ(film.data(), expected.data());
@@ -237,10 +228,11 @@ TEST(DirectPass, AResumedTimedPassEndsTheDoublingItWasStoppedIn) {
 TEST(DirectPass, ASaveRequestIsHandedOnWithThePassSoFarAndThePassGoesOn) {
   Renderer renderer(withLightInView(), small(1 << 10));
   std::vector<std::pair<int, bool>> told;
-  RankReduce savesAtTheSecond = askedAtChunk(2, false);
-  savesAtTheSecond.chunkDone = [&](const DirectPass& sofar, bool save) { told.emplace_back(sofar.spp, save); };
+  ScriptedJob savesAtTheSecond;
+  savesAtTheSecond.saveAt = 2;
   Film film(12, 10);
-  const DirectPass pass = renderDirectPass(renderer, 0, 1, film, savesAtTheSecond);
+  const DirectPass pass = renderDirectPass(renderer, savesAtTheSecond, film, {},
+                                           [&](const DirectPass& sofar, bool save) { told.emplace_back(sofar.spp, save); });
   EXPECT_EQ(pass.spp, 1 << 10);
   EXPECT_FALSE(pass.stopped);
   ASSERT_GE(told.size(), 3u);
