@@ -90,8 +90,9 @@ std::vector<uint64_t> ReplicaPool::checkpointPart() const {
       w.u64(p.epoch);
     }
   }
-  w.u64(chains_.size());
+  w.u64(hosting_.chains().size());
   for (int c : hosted()) {
+    if (!hosting_.hosts(c)) continue;  // an inactive pool started no chains
     w.u64(uint64_t(c));
     w.block(travellingChain(c));
   }
@@ -165,9 +166,9 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
   // phases of chains hosted elsewhere are never read with local decisions); only the hosted ones
   // are traced again.
   for (int c = 0; c < chainCount(); ++c) records[size_t(c)] = noteArrival(c, records[size_t(c)]);
-  chains_.clear();
-  for (int c : hosted()) chains_.emplace_back(records[size_t(c)], family_, evaluator());
-  reindex();
+  std::vector<ReplicaChain> chains;
+  for (int c : hosted()) chains.emplace_back(records[size_t(c)], family_, evaluator());
+  hosting_.setChains(std::move(chains));
   if (!localDecisions() || rank_ == 0) {
     tally_ = tally;
     trips_.addEarlier(trips);
@@ -213,9 +214,7 @@ std::vector<std::vector<double>> ReplicaPool::resumeMessages(int group, double e
     const bool gathering = i + ungathered_[size_t(group)] >= rounds.size();
     if (!localDecisions() && !gathering) continue;  // held already
     std::vector<double> msg;
-    if (active_ && !localDecisions())  // the round's exchange still needs the targets
-      for (size_t c = 0; c < chains_.size(); ++c)
-        if (groupOf(hosted()[c]) == group) msg.insert(msg.end(), chains_[c].targets(), chains_[c].targets() + levels());
+    if (active_ && !localDecisions()) appendTargets(group, msg);  // the round's exchange still needs the targets
     const std::vector<double> t = tail(rounds[i].large, elapsed);
     msg.insert(msg.end(), t.begin(), t.end());
     out.push_back(std::move(msg));

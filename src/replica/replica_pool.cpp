@@ -43,6 +43,7 @@ ReplicaPool::ReplicaPool(PerWorker<PssEvaluator>& evals, const ReplicaSettings& 
       family_(settings.family, meanTarget),
       estimator_(family_, settings.beta),
       placement_(resolvePlacement(settings.placement, settings.ladders, ranks)),
+      hosting_(settings.ladders * family_.levels(), family_.levels(), rank, ranks, placement_),
       windows_(roundGroups(settings.ladders), ranks, settings.balanceWindow),
       departed_(size_t(family_.levels())),
       ledger_(family_.levels()),
@@ -65,10 +66,6 @@ ReplicaPool::ReplicaPool(PerWorker<PssEvaluator>& evals, const ReplicaSettings& 
     levelOf_[size_t(c)] = c % m;
     trips_.visit(c, c % m);
   }
-  hostedByRank_.resize(size_t(ranks_));
-  for (int c = 0; c < chainCount(); ++c)
-    hostedByRank_[size_t(chainRank(c, m, ranks_, placement_))].push_back(c);
-  localIndex_.assign(size_t(chainCount()), -1);
   // Nothing visible (I = 0 everywhere the bootstrap looked): no chain runs, the image stays black.
   active_ = meanTarget > 0.0;
 }
@@ -98,10 +95,11 @@ void ReplicaPool::startFromBootstrap(const std::vector<double>& bootstrap) {
   std::vector<std::vector<StreamValues>> annealed;
   if (settings_.init == InitKind::Annealing)
     annealed = annealedStarts(evaluator(), family_, q, seed_, settings_.annealing);
-  chains_.reserve(hosted().size());
+  std::vector<ReplicaChain> chains;
+  chains.reserve(hosted().size());
   for (int c : hosted()) {
     const int level = c % m;
-    ReplicaChain& chain = chains_.emplace_back(replicaChainKey(seed_, c), level, family_);
+    ReplicaChain& chain = chains.emplace_back(replicaChainKey(seed_, c), level, family_);
     if (!annealed.empty()) {
       const std::vector<StreamValues>& particles = annealed[size_t(level)];
       chain.start(evaluator(), replicaChainKey(seed_, c), particles[chain.pickUniform(particles.size())]);
@@ -109,12 +107,7 @@ void ReplicaPool::startFromBootstrap(const std::vector<double>& bootstrap) {
       chain.start(evaluator(), bootstrapKey(seed_, chain.pickBootstrap(start[size_t(level)])));
     }
   }
-  reindex();
-}
-
-void ReplicaPool::reindex() {
-  std::fill(localIndex_.begin(), localIndex_.end(), -1);
-  for (size_t i = 0; i < hosted().size(); ++i) localIndex_[size_t(hosted()[i])] = int(i);
+  hosting_.setChains(std::move(chains));
 }
 
 void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films, const std::function<void()>& progress) {
@@ -131,7 +124,7 @@ void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films, 
     stepsPerChain_ += steps;
   }
   std::vector<size_t> mine;  // the group's hosted chains, in order
-  for (size_t i = 0; i < chains_.size(); ++i)
+  for (size_t i = 0; i < hosting_.chains().size(); ++i)
     if (groupOf(hosted()[i]) == group) mine.push_back(i);
   LargeStepSums& large = pendingLarge_[size_t(group)];
   const int workers = std::min(int(evaluators_.size()), std::max(int(mine.size()), 1));
@@ -160,13 +153,13 @@ void ReplicaPool::runRound(int group, uint64_t steps, std::vector<Film>& films, 
 }
 
 Film& ReplicaPool::filmOf(size_t i, std::vector<Film>& films) const {
-  return films.size() > 1 ? films[size_t(chains_[i].level())] : films[0];
+  return films.size() > 1 ? films[size_t(hosting_.chains()[i].level())] : films[0];
 }
 
 template <class Output>
 void ReplicaPool::stepChain(size_t i, uint64_t steps, int worker, Output& out) {
   const int c = hosted()[i];
-  ReplicaChain& chain = chains_[i];
+  ReplicaChain& chain = hosting_.chains()[i];
   const LevelEvaluator& eval = evaluators_[size_t(worker)];
   if (epochOf_[size_t(c)] != ledger_.epoch()) {
     chain.refresh(eval);
@@ -179,7 +172,7 @@ size_t ReplicaPool::messageLength(int group, int rank) const {
   if (!active_) return 4;
   if (localDecisions()) return size_t(levels()) + 4;
   size_t chains = 0;
-  for (int c : hostedByRank_[size_t(rank)]) chains += groupOf(c) == group;
+  for (int c : hosting_.hostedBy(rank)) chains += groupOf(c) == group;
   return chains * size_t(levels()) + size_t(levels()) + 4;
 }
 
@@ -196,11 +189,7 @@ std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double 
   std::vector<double> msg;
   msg.reserve(messageLength(group, rank_));
   LargeStepSums& large = pendingLarge_[size_t(group)];
-  if (active_) {
-    if (!localDecisions())
-      for (size_t i = 0; i < chains_.size(); ++i)
-        if (groupOf(hosted()[i]) == group) msg.insert(msg.end(), chains_[i].targets(), chains_[i].targets() + levels());
-  }
+  if (active_ && !localDecisions()) appendTargets(group, msg);
   RoundTail tail = tailOf(large);
   tail.seconds = roundSeconds;
   tail.stop = stop;
@@ -210,6 +199,11 @@ std::vector<double> ReplicaPool::roundMessage(int group, double elapsed, double 
   posted_[size_t(group)].push_back({large, ledger_.epoch(), placementVersion_[size_t(group)]});
   large = LargeStepSums(levels());
   return msg;
+}
+
+void ReplicaPool::appendTargets(int group, std::vector<double>& message) const {
+  for (int c : hosted())
+    if (groupOf(c) == group) message.insert(message.end(), hosting_.chain(c).targets(), hosting_.chain(c).targets() + levels());
 }
 
 std::vector<double> ReplicaPool::messageTail(const std::vector<double>& message) const {
@@ -319,7 +313,7 @@ void ReplicaPool::exchange(int group, const std::vector<std::vector<double>>& me
     targetsOf.assign(size_t(chainCount()), nullptr);
     for (int r = 0; r < int(messages.size()); ++r) {
       const double* msg = messages[size_t(r)].data();
-      for (int c : hostedByRank_[size_t(r)]) {
+      for (int c : hosting_.hostedBy(r)) {
         if (groupOf(c) != group) continue;
         targetsOf[size_t(c)] = msg;
         msg += m;
@@ -327,7 +321,7 @@ void ReplicaPool::exchange(int group, const std::vector<std::vector<double>>& me
     }
   }
   auto targets = [&](int c) {
-    return localDecisions() ? chains_[size_t(localIndex_[size_t(c)])].targets() : targetsOf[size_t(c)];
+    return localDecisions() ? hosting_.chain(c).targets() : targetsOf[size_t(c)];
   };
   std::vector<int> holder(static_cast<size_t>(m));
   auto decide = [&](int ladder) {
@@ -350,7 +344,8 @@ void ReplicaPool::exchange(int group, const std::vector<std::vector<double>>& me
   } else {
     for (int ladder = group; ladder < settings_.ladders; ladder += groups()) decide(ladder);
   }
-  for (size_t i = 0; i < chains_.size(); ++i) chains_[i].setLevel(levelOf_[size_t(hosted()[i])]);
+  for (int c : hosted())
+    if (hosting_.hosts(c)) hosting_.chain(c).setLevel(levelOf_[size_t(c)]);
 }
 
 std::vector<ChainMove> ReplicaPool::balanceMoves(int group) const {
@@ -360,7 +355,7 @@ std::vector<ChainMove> ReplicaPool::balanceMoves(int group) const {
   std::vector<std::vector<int>> units(static_cast<size_t>(ranks_));
   std::vector<int> counts(static_cast<size_t>(ranks_));
   for (int r = 0; r < ranks_; ++r) {
-    for (int c : hostedByRank_[size_t(r)])
+    for (int c : hosting_.hostedBy(r))
       if (groupOf(c) == group && c % unit == 0) units[size_t(r)].push_back(c);
     counts[size_t(r)] = int(units[size_t(r)].size());
   }
@@ -373,7 +368,7 @@ std::vector<ChainMove> ReplicaPool::balanceMoves(int group) const {
 }
 
 std::vector<uint64_t> ReplicaPool::travellingChain(int chain) const {
-  std::vector<uint64_t> state = chains_[size_t(localIndex_[size_t(chain)])].serialize();
+  std::vector<uint64_t> state = hosting_.chain(chain).serialize();
   state.push_back(epochOf_[size_t(chain)] == ledger_.epoch() ? 0 : 1);
   state.push_back(trips_.phase(chain));  // only the host tracks it with local decisions
   return state;
@@ -389,41 +384,25 @@ std::vector<uint64_t> ReplicaPool::noteArrival(int chain, const std::vector<uint
 }
 
 std::vector<uint64_t> ReplicaPool::exportChain(int chain) {
-  if (localIndex_[size_t(chain)] < 0) throw std::logic_error("exporting a chain this rank does not host");
-  for (int k = 0; k < levels(); ++k)
-    departed_[size_t(k)].add(chains_[size_t(localIndex_[size_t(chain)])].counters()[size_t(k)]);
+  if (!hosting_.hosts(chain)) throw std::logic_error("exporting a chain this rank does not host");
+  for (int k = 0; k < levels(); ++k) departed_[size_t(k)].add(hosting_.chain(chain).counters()[size_t(k)]);
   return travellingChain(chain);
 }
 
 void ReplicaPool::importChain(int chain, const std::vector<uint64_t>& state) {
-  imported_.emplace_back(chain, ReplicaChain(noteArrival(chain, state), family_, evaluator()));
+  hosting_.receive(chain, ReplicaChain(noteArrival(chain, state), family_, evaluator()));
 }
 
 void ReplicaPool::commitMoves() {
   if (!moves_.empty()) ++placementVersion_[size_t(groupOf(moves_.front().chain))];
-  std::vector<std::vector<int>> next = applyMoves(hostedByRank_, moves_);
-  std::vector<ReplicaChain> chains;
-  chains.reserve(next[size_t(rank_)].size());
-  for (int id : next[size_t(rank_)]) {
-    if (localIndex_[size_t(id)] >= 0) {  // kept (the index is still the old one)
-      chains.push_back(std::move(chains_[size_t(localIndex_[size_t(id)])]));
-      continue;
-    }
-    const auto in = std::find_if(imported_.begin(), imported_.end(), [id](const auto& p) { return p.first == id; });
-    if (in == imported_.end()) throw std::logic_error("a chain moved to this rank was not imported");
-    chains.push_back(std::move(in->second));
-  }
-  chains_ = std::move(chains);
-  hostedByRank_ = std::move(next);
-  reindex();
+  hosting_.commit(moves_);
   chainMoves_ += moves_.size();
   moves_.clear();
-  imported_.clear();
 }
 
 std::vector<LevelCounters> ReplicaPool::hostedCounters() const {
   std::vector<LevelCounters> total(static_cast<size_t>(levels()));
-  for (const ReplicaChain& chain : chains_)
+  for (const ReplicaChain& chain : hosting_.chains())
     for (int k = 0; k < levels(); ++k) total[size_t(k)].add(chain.counters()[size_t(k)]);
   for (int k = 0; k < levels(); ++k) total[size_t(k)].add(departed_[size_t(k)]);
   return total;

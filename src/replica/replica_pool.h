@@ -21,6 +21,7 @@
 #include "replica/exchange.h"
 #include "replica/family.h"
 #include "replica/balance_window.h"
+#include "replica/chain_hosting.h"
 #include "replica/level_estimator.h"
 #include "replica/load_balance.h"
 #include "replica/normaliser_ledger.h"
@@ -118,7 +119,7 @@ class ReplicaPool {
   void importChain(int chain, const std::vector<uint64_t>& state);
   void commitMoves();
   uint64_t chainMoves() const { return chainMoves_; }  // chains moved so far
-  int hostedCount(int rank) const { return int(hostedByRank_[size_t(rank)].size()); }
+  int hostedCount(int rank) const { return int(hosting_.hostedBy(rank).size()); }
 
   // Checkpoints, taken where group 0 has just finished a round and every other group's collective
   // of the round before is pending (RoundLoopHooks::roundDone). This rank's part: its chains by
@@ -142,7 +143,7 @@ class ReplicaPool {
   std::vector<LevelCounters> hostedCounters() const;
   const std::vector<double>& normalisers() const { return estimator_.normalisers(); }
   int levelOf(int chain) const { return levelOf_[size_t(chain)]; }  // with local decisions: hosted chains only
-  bool hosts(int chain) const { return localIndex_[size_t(chain)] >= 0; }
+  bool hosts(int chain) const { return hosting_.hosts(chain); }
 
  private:
   // The bootstrap's normalisers and every hosted chain's first state (resampled or annealed).
@@ -152,8 +153,9 @@ class ReplicaPool {
   void stepChain(size_t i, uint64_t steps, int worker, Output& out);
   // The film hosted chain i splats into: the one film, or its level's.
   Film& filmOf(size_t i, std::vector<Film>& films) const;
-  const std::vector<int>& hosted() const { return hostedByRank_[size_t(rank_)]; }
-  void reindex();  // localIndex_ from hosted()
+  const std::vector<int>& hosted() const { return hosting_.hosted(); }
+  // The targets of the group's hosted chains, in order, appended to a round message.
+  void appendTargets(int group, std::vector<double>& message) const;
   // The moves that give each rank chains of the group in proportion to its measured speed.
   std::vector<ChainMove> balanceMoves(int group) const;
   void exchange(int group, const std::vector<std::vector<double>>& messages, uint64_t round);
@@ -181,12 +183,9 @@ class ReplicaPool {
   std::vector<ChainLog> logs_;  // with several workers: each chain's round, kept until its turn
   bool active_ = false;
   Placement placement_;
-  std::vector<std::vector<int>> hostedByRank_;  // global chain ids each rank hosts (placement)
-  std::vector<int> localIndex_;         // every chain's index in chains_, -1 if hosted elsewhere
-  std::vector<ReplicaChain> chains_;    // this rank's, in hosted() order
+  ChainHosting hosting_;                // which rank hosts which chain; this rank's chains
   BalanceWindows windows_;              // when to decide a group's placement again, and the speeds measured
   std::vector<ChainMove> moves_;        // planned, not yet committed
-  std::vector<std::pair<int, ReplicaChain>> imported_;
   std::vector<LevelCounters> departed_;  // counters of chains this rank gave away
   uint64_t chainMoves_ = 0;
   std::vector<uint64_t> epochOf_;       // every chain's: the epoch its state was last evaluated in
