@@ -35,5 +35,7 @@ struct PathContext {
 };
 
 inline float misWeightTerm(float ratio, MisHeuristic h) { return h == MisHeuristic::Power ? ratio * ratio : ratio; }
+// The heuristic's exponent beta: weights go as density^beta (1 balance, 2 power).
+inline double misExponent(MisHeuristic h) { return h == MisHeuristic::Power ? 2.0 : 1.0; }
 
 }  // namespace relt

@@ -41,7 +41,7 @@ ReplicaPool::ReplicaPool(PerWorker<PssEvaluator>& evals, const ReplicaSettings& 
       rank_(rank),
       ranks_(ranks),
       family_(settings.family, meanTarget),
-      estimator_(family_, settings.beta),
+      estimator_(family_, misExponent(settings.levelHeuristic)),
       placement_(resolvePlacement(settings.placement, settings.ladders, ranks)),
       hosting_(settings.ladders * family_.levels(), family_.levels(), rank, ranks, placement_),
       windows_(roundGroups(settings.ladders), ranks, settings.balanceWindow),

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string_view>
 
+#include "path/path_context.h"
 #include "pss/chain_defaults.h"
 #include "replica/exchange.h"
 #include "replica/family.h"
@@ -98,7 +99,7 @@ struct ReplicaSettings {
   int normaliserLagGrowth = 8;
   Placement placement = Placement::Auto;  // where chains start
   double balanceWindow = 0.25;  // seconds of stepping (slowest rank) between placement decisions (0: never)
-  double beta = 1.0;          // MIS over levels: 1 balance, 2 power heuristic
+  MisHeuristic levelHeuristic = MisHeuristic::Balance;  // MIS over levels
   int bootstrap = kBootstrapPaths;
   InitKind init = InitKind::Resample;
   AnnealingSettings annealing;

@@ -30,10 +30,10 @@ void addLadderOptions(CLI::App& cmd, ReplicaSettings& r) {
       ->check(CLI::Range(1, 1 << 16))
       ->capture_default_str();
   cmd.add_option_function<std::string>(
-         "--mis-levels", [&r](const std::string& v) { r.beta = v == "power" ? 2.0 : 1.0; },
+         "--mis-levels", [&r](const std::string& v) { r.levelHeuristic = *parseMisHeuristic(v); },
          "relt: MIS heuristic over levels")
       ->check(CLI::IsMember({"balance", "power"}))
-      ->default_str(r.beta == 2.0 ? "power" : "balance");
+      ->default_str(misHeuristicName(r.levelHeuristic));
   cmd.add_option_function<std::string>(
          "--init", [&r](const std::string& v) { r.init = v == "annealing" ? InitKind::Annealing : InitKind::Resample; },
          "relt: first states (resample the bootstrap per level, or population annealing)")
@@ -153,7 +153,7 @@ void addReltSettingsJson(const RenderSettings& s, nlohmann::json& j) {
   j["normaliser_lag_growth"] = r.normaliserLagGrowth;
   j["placement"] = placementName(r.placement);
   j["balance_window"] = r.balanceWindow;
-  j["mis_levels"] = r.beta == 1.0 ? "balance" : "power";
+  j["mis_levels"] = misHeuristicName(r.levelHeuristic);
   j["init"] = r.init == InitKind::Annealing ? "annealing" : "resample";
   if (r.perLevel) j["per_level"] = true;
   addChainSettingsJson(s, j);

@@ -76,7 +76,7 @@ double bruteForceWeight(const Renderer& r, const Record& rec, MisHeuristic h, bo
     for (int i = s; i < n; ++i) p *= remap(fromCamera[i]);
     return p;
   };
-  const double beta = h == MisHeuristic::Power ? 2.0 : 1.0;
+  const double beta = misExponent(h);
   double sum = 0.0;
   for (int s = 0; s <= n; ++s)
     if (valid(s)) sum += std::pow(density(s), beta);
