@@ -8,6 +8,8 @@
 #                difference between the cores); prints those and their geometric mean.
 # Usage: scripts/bench/compare_builds.sh BIN_A BIN_B [PAIRS] [SPP] [MODE] [INTEGRATOR] [SCENE]
 #   defaults: 6 pairs, 128 spp, interleaved, pt, cornell-box (256x256, max depth 8, one rank)
+#   SPP is samples per pixel for pt, bdpt and erpt, mutations per pixel for the Markov-chain
+#   integrators (pssmlt, mmlt, relt), whose rate is mutations per second.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 A="$1"
@@ -21,10 +23,13 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 
-# Samples per second of one render (binary, core); relt prints "... X M samples/s ...".
+case "$INTEGRATOR" in pt | bdpt | erpt) BUDGET=(--spp "$SPP") ;; *) BUDGET=(--mutations-per-pixel "$SPP") ;; esac
+
+# Samples (or mutations) per second of one render (binary, core); relt prints "... X M samples/s ..."
+# or "... X M mutations/s ...".
 rate() {
-  taskset -c "$2" "$1" render "$ROOT/scenes/$SCENE.gltf" --integrator "$INTEGRATOR" --spp "$SPP" --width 256 --height 256 \
-    --max-depth 8 -o "$TMP/out-$2.exr" 2>&1 | sed -n 's/.* \([0-9.]*\) M samples\/s.*/\1/p' | tail -1
+  taskset -c "$2" "$1" render "$ROOT/scenes/$SCENE.gltf" --integrator "$INTEGRATOR" "${BUDGET[@]}" --width 256 --height 256 \
+    --max-depth 8 -o "$TMP/out-$2.exr" 2>&1 | sed -n 's/.* \([0-9.]*\) M \(samples\|mutations\)\/s.*/\1/p' | tail -1
 }
 
 echo "A: $A"
