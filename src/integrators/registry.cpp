@@ -11,6 +11,7 @@
 #include "integrators/pt/pt_integrator.h"
 #include "integrators/relt/relt_integrator.h"
 #include "integrators/shared_options.h"
+#include "integrators/vcm/vcm_integrator.h"
 
 namespace relt {
 namespace {
@@ -23,6 +24,7 @@ std::vector<const IntegratorEntry*>& entries() {
       &mmltIntegrator(),
       &erptIntegrator(),
       &reltIntegrator(),
+      &vcmIntegrator(),
   };
   return all;
 }

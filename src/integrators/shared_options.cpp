@@ -8,7 +8,7 @@
 namespace relt {
 
 void addSharedOptions(CLI::App& cmd, RenderSettings& r) {
-  cmd.add_option("--spp", r.spp, "pt, bdpt, erpt: samples per pixel (default " + std::to_string(kDefaultSpp) + ")")
+  cmd.add_option("--spp", r.spp, "pt, bdpt, erpt, vcm: samples per pixel (vcm: iterations; default " + std::to_string(kDefaultSpp) + ")")
       ->check(CLI::Range(1, 1 << 24));
   cmd.add_option("--mutations-per-pixel", r.mutationsPerPixel,
                  "Markov-chain integrators: mutations per pixel (default " +

@@ -5,12 +5,6 @@
 namespace relt {
 namespace {
 
-// Veach 1997 §5.3: with shading normals the adjoint BSDF needs this factor on light subpaths.
-float shadingCorrection(const SurfacePoint& sp, const Vec3& wo, const Vec3& wi) {
-  const float den = std::abs(glm::dot(wo, sp.ng)) * std::abs(glm::dot(wi, sp.ns));
-  return den > 0.0f ? std::abs(glm::dot(wo, sp.ns)) * std::abs(glm::dot(wi, sp.ng)) / den : 0.0f;
-}
-
 // bsdf: replaces the vertex's own (a hook's, at a connection vertex).
 Color surfaceF(const PathVertex& v, const Vec3& w, TransportMode mode, const Bsdf* bsdf = nullptr) {
   Color f = (bsdf ? *bsdf : *v.bsdf).eval(v.wo, w, mode);

@@ -34,6 +34,12 @@ inline float continuationProbability(const Material& m) {
   return std::clamp(maxComponent(m.baseColor), 0.0f, 1.0f);
 }
 
+// Veach 1997 §5.3: with shading normals the adjoint BSDF needs this factor on light subpaths.
+inline float shadingCorrection(const SurfacePoint& sp, const Vec3& wo, const Vec3& wi) {
+  const float den = std::abs(glm::dot(wo, sp.ng)) * std::abs(glm::dot(wi, sp.ns));
+  return den > 0.0f ? std::abs(glm::dot(wo, sp.ns)) * std::abs(glm::dot(wi, sp.ng)) / den : 0.0f;
+}
+
 // Solid angle density at `from` towards `to` -> area density at `to`.
 inline float solidAngleToArea(float pdfW, const PathVertex& from, const PathVertex& to) {
   const Vec3 d = to.sp.p - from.sp.p;

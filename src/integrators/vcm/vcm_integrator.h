@@ -1,0 +1,8 @@
+#pragma once
+#include "integrators/integrator.h"
+
+namespace relt {
+
+const IntegratorEntry& vcmIntegrator();
+
+}  // namespace relt

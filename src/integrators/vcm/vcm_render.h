@@ -1,0 +1,10 @@
+#pragma once
+// vcm's render: iterations dealt to the ranks in turn (iteration i on rank i mod P), each on the
+// rank's worker threads; --spp iterations, or --time decided collectively after every round of P.
+#include "integrators/integrator.h"
+
+namespace relt {
+
+void renderVcm(RenderContext& context);
+
+}  // namespace relt

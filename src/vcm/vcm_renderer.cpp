@@ -1,0 +1,104 @@
+#include "vcm/vcm_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "camera/film_position.h"
+#include "core/rng.h"
+#include "parallel/workers.h"
+
+namespace relt {
+namespace {
+
+constexpr uint64_t kLightPathPurpose = 0x7c41, kCameraPathPurpose = 0x7c43;
+
+}  // namespace
+
+double vcmRadius(double r1, double alpha, uint64_t iteration) {
+  return r1 * std::pow(double(iteration + 1), 0.5 * (alpha - 1.0));
+}
+
+VcmRenderer::VcmRenderer(const PathContext& ctx, const VcmSettings& settings, uint64_t seed, int width, int height,
+                         int threads)
+    : ctx_(ctx),
+      settings_(settings),
+      seed_(seed),
+      width_(width),
+      height_(height),
+      workers_(std::max(threads, 1)),
+      radius1_(settings.radius * double(glm::length(ctx.scene.bounds.diagonal()))),
+      workerVertices_(size_t(workers_)) {
+  for (int w = 0; w < workers_; ++w) workerFilms_.emplace_back(width, height);
+}
+
+void VcmRenderer::render(uint64_t iteration, Film& film) {
+  VcmIteration it;
+  it.mode = settings_.mode;
+  it.radius = float(vcmRadius(radius1_, settings_.alpha, iteration));
+  it.lightPaths = double(width_) * height_;
+  const VcmTracer tracer(ctx_, it);
+  traceLightPaths(tracer, iteration);
+  const bool merging = settings_.mode != VcmMode::Bpt && it.radius > 0.0f;
+  if (merging) {
+    positions_.resize(vertices_.size());
+    for (size_t i = 0; i < vertices_.size(); ++i) positions_[i] = vertices_[i].sp.p;
+    grid_.build(positions_, it.radius);
+  }
+  traceCameraPaths(tracer, iteration, merging ? &grid_ : nullptr);
+  for (Film& f : workerFilms_) {  // in worker order
+    film.addWeighted(f, 1.0);
+    f.clear();
+  }
+  ++counters_.iterations;
+  counters_.lightVertices += vertices_.size();
+  counters_.cameraPaths += uint64_t(width_) * height_;
+  counters_.lastRadius = it.radius;
+}
+
+// Worker w traces a contiguous block of the light subpaths; the blocks are then joined in order.
+void VcmRenderer::traceLightPaths(const VcmTracer& tracer, uint64_t iteration) {
+  const uint32_t paths = uint32_t(width_) * uint32_t(height_);
+  std::vector<std::vector<uint32_t>> starts(static_cast<size_t>(workers_));
+  runOnWorkers(workers_, [&](int w) {
+    std::vector<LightVertex>& mine = workerVertices_[size_t(w)];
+    mine.clear();
+    starts[size_t(w)].clear();
+    PathSample splats;
+    const uint32_t first = uint32_t(uint64_t(paths) * w / workers_), end = uint32_t(uint64_t(paths) * (w + 1) / workers_);
+    for (uint32_t j = first; j < end; ++j) {
+      starts[size_t(w)].push_back(uint32_t(mine.size()));
+      IndependentSource u(hashKey(seed_, kLightPathPurpose, iteration, j));
+      splats.clear();
+      tracer.traceLightPath(u, mine, splats);
+      workerFilms_[size_t(w)].addSample(splats);
+    }
+  });
+  vertices_.clear();
+  pathStart_.clear();
+  for (int w = 0; w < workers_; ++w) {
+    for (uint32_t s : starts[size_t(w)]) pathStart_.push_back(uint32_t(vertices_.size()) + s);
+    vertices_.insert(vertices_.end(), workerVertices_[size_t(w)].begin(), workerVertices_[size_t(w)].end());
+  }
+  pathStart_.push_back(uint32_t(vertices_.size()));
+}
+
+// Rows dealt to the workers in turn; pixel p's camera subpath connects to light subpath p.
+void VcmRenderer::traceCameraPaths(const VcmTracer& tracer, uint64_t iteration, const HashGrid* grid) {
+  runOnWorkers(workers_, [&](int w) {
+    PathSample sample;
+    for (int row = w; row < height_; row += workers_) {
+      for (int x = 0; x < width_; ++x) {
+        const uint32_t pixel = uint32_t(row) * uint32_t(width_) + uint32_t(x);
+        IndependentSource u(hashKey(seed_, kCameraPathPurpose, iteration, pixel));
+        const Vec2 film = positionInPixel(x, row, u.next2(SampleStream::Camera));
+        const std::span<const LightVertex> own(vertices_.data() + pathStart_[pixel],
+                                               pathStart_[pixel + 1] - pathStart_[pixel]);
+        sample.clear();
+        tracer.traceCameraPath(film, u, own, vertices_, grid, sample);
+        workerFilms_[size_t(w)].addSample(sample);
+      }
+    }
+  });
+}
+
+}  // namespace relt

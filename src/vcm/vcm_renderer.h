@@ -1,0 +1,56 @@
+#pragma once
+// VCM's iterations on one process (vcm_tracer.h): iteration i traces one light subpath per pixel,
+// indexes their vertices for merging, then traces one camera subpath per pixel, on the process's
+// worker threads. Every random number is keyed by (seed, iteration, path), so an iteration's
+// estimate is the same whichever process and threads render it (up to the order of sums).
+#include <cstdint>
+#include <vector>
+
+#include "film/film.h"
+#include "vcm/vcm_tracer.h"
+
+namespace relt {
+
+struct VcmSettings {
+  VcmMode mode = VcmMode::Vcm;
+  double radius = 0.005;  // the first iteration's merging radius, as a fraction of the scene's diagonal
+  double alpha = 0.75;    // r_i = r_1 i^((alpha - 1) / 2): the radius shrinks, the bias vanishes
+};
+
+// The merging radius of iteration i (from 0) for a first radius r1.
+double vcmRadius(double r1, double alpha, uint64_t iteration);
+
+struct VcmCounters {
+  uint64_t iterations = 0, lightVertices = 0, cameraPaths = 0;
+  double lastRadius = 0.0;
+};
+
+class VcmRenderer {
+ public:
+  VcmRenderer(const PathContext& ctx, const VcmSettings& settings, uint64_t seed, int width, int height, int threads);
+
+  // Adds iteration i's estimate of the image to `film` (the image: the sum over iterations divided
+  // by their number).
+  void render(uint64_t iteration, Film& film);
+  const VcmCounters& counters() const { return counters_; }
+  double firstRadius() const { return radius1_; }
+
+ private:
+  void traceLightPaths(const VcmTracer& tracer, uint64_t iteration);
+  void traceCameraPaths(const VcmTracer& tracer, uint64_t iteration, const HashGrid* grid);
+
+  const PathContext& ctx_;
+  VcmSettings settings_;
+  uint64_t seed_;
+  int width_, height_, workers_;
+  double radius1_;
+  std::vector<std::vector<LightVertex>> workerVertices_;  // worker w's block of light subpaths
+  std::vector<LightVertex> vertices_;                     // every light vertex of the iteration, by path
+  std::vector<uint32_t> pathStart_;                       // light path j's: vertices_[pathStart_[j] ..)
+  std::vector<Vec3> positions_;
+  std::vector<Film> workerFilms_;
+  HashGrid grid_;
+  VcmCounters counters_;
+};
+
+}  // namespace relt

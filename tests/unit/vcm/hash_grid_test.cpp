@@ -1,0 +1,48 @@
+// The merging range search finds exactly the points within the radius, as a search over all does.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "core/rng.h"
+#include "vcm/hash_grid.h"
+
+using namespace relt;
+
+namespace {
+
+std::vector<Vec3> randomPoints(size_t n, uint64_t seed, float extent) {
+  Rng rng(seed, 1);
+  std::vector<Vec3> points(n);
+  for (Vec3& p : points) p = Vec3(rng.uniform(), rng.uniform(), rng.uniform()) * extent - Vec3(extent / 2);
+  return points;
+}
+
+}  // namespace
+
+TEST(HashGrid, FindsExactlyThePointsWithinTheRadius) {
+  const std::vector<Vec3> points = randomPoints(5000, 3, 2.0f);
+  HashGrid grid;
+  for (float radius : {0.01f, 0.05f, 0.3f}) {
+    grid.build(points, radius);
+    const std::vector<Vec3> queries = randomPoints(300, 7, 2.4f);
+    size_t found = 0;
+    for (const Vec3& q : queries) {
+      std::vector<uint32_t> near, expected;
+      grid.forEachNear(q, [&](uint32_t i) { near.push_back(i); });
+      for (uint32_t i = 0; i < points.size(); ++i)
+        if (glm::dot(points[i] - q, points[i] - q) <= radius * radius) expected.push_back(i);
+      std::sort(near.begin(), near.end());
+      EXPECT_EQ(near, expected) << "radius " << radius;
+      found += expected.size();
+    }
+    if (radius > 0.2f) EXPECT_GT(found, 1000u) << "the test must look at many points";
+  }
+}
+
+TEST(HashGrid, AnEmptyGridFindsNothing) {
+  HashGrid grid;
+  grid.build({}, 0.1f);
+  int found = 0;
+  grid.forEachNear(Vec3(0.0f), [&](uint32_t) { ++found; });
+  EXPECT_EQ(found, 0);
+}
