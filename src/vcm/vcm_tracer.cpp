@@ -1,35 +1,10 @@
 #include "vcm/vcm_tracer.h"
 
 #include <cmath>
-#include <numbers>
 
 #include "path/vertex.h"
 
 namespace relt {
-
-std::optional<VcmMode> parseVcmMode(std::string_view name) {
-  if (name == "vcm") return VcmMode::Vcm;
-  if (name == "bpt") return VcmMode::Bpt;
-  if (name == "ppm") return VcmMode::Ppm;
-  return std::nullopt;
-}
-
-const char* vcmModeName(VcmMode mode) {
-  switch (mode) {
-    case VcmMode::Bpt: return "bpt";
-    case VcmMode::Ppm: return "ppm";
-    default: return "vcm";
-  }
-}
-
-VcmTracer::VcmTracer(const PathContext& ctx, const VcmIteration& iteration) : ctx_(ctx), iteration_(iteration) {
-  const double eta = std::numbers::pi * double(iteration.radius) * iteration.radius * iteration.lightPaths;
-  if (merges() && eta > 0.0) {
-    vmWeight_ = connects() ? mis(float(eta)) : 0.0f;
-    vcWeight_ = connects() ? mis(float(1.0 / eta)) : 0.0f;
-    mergeNormalisation_ = 1.0 / eta;
-  }
-}
 
 bool VcmTracer::startLightPath(SampleSource& u, VcmSubpath& s) const {
   const float uPick = u.next(SampleStream::Light);
@@ -41,33 +16,18 @@ bool VcmTracer::startLightPath(SampleSource& u, VcmSubpath& s) const {
   if (!(em.pdfDir > 0.0f)) return false;
   const Color le = lp.delta ? ctx_.lights.intensity(lp.light, em.dir) : ctx_.lights.emitted(lp.sp, em.dir);
   const float cosLight = lp.delta ? 1.0f : std::abs(glm::dot(lp.sp.ng, em.dir));
-  const float pdfStart = lp.pdfPick * lp.pdfPos, pdfEmit = pdfStart * em.pdfDir;
+  const float pdfEmit = lp.pdfPick * lp.pdfPos * em.pdfDir;
   if (isBlack(le) || !(cosLight > 0.0f) || !(pdfEmit > 0.0f)) return false;
   s.beta = le * (cosLight / pdfEmit);
-  s.dVCM = mis(pdfStart / pdfEmit);
-  s.dVC = lp.delta ? 0.0f : mis(cosLight / pdfEmit);  // a point light's position cannot be hit
-  s.dVM = s.dVC * vcWeight_;
-  s.last = lp.sp.p;
+  mis_.startLight(s, lp, em.pdfDir, cosLight);
   s.origin = lp.delta ? lp.sp.p : ctx_.tracer.offsetOrigin(lp.sp.p, lp.sp.ng, em.dir);
   s.dir = em.dir;
   return true;
 }
 
-// Densities use the segment between the stored vertex positions (not the offset ray's), as Bdpt.
-bool VcmTracer::arrive(VcmSubpath& s, SurfacePoint& hit) const {
+bool VcmTracer::advance(VcmSubpath& s, SurfacePoint& hit) const {
   float distance;
-  if (!ctx_.tracer.intersect(Ray{s.origin, s.dir, INFINITY}, hit, distance)) return false;
-  const Vec3 d = hit.p - s.last;
-  const float dist2 = glm::dot(d, d);
-  const float cosIn = dist2 > 0.0f ? std::abs(glm::dot(hit.ng, d)) / std::sqrt(dist2) : 0.0f;
-  if (!(cosIn > 0.0f)) return false;
-  ++s.length;
-  s.dVCM *= mis(dist2);
-  const float c = mis(cosIn);
-  s.dVCM /= c;
-  s.dVC /= c;
-  s.dVM /= c;
-  return true;
+  return ctx_.tracer.intersect(Ray{s.origin, s.dir, INFINITY}, hit, distance) && mis_.arrive(s, hit);
 }
 
 bool VcmTracer::scatter(const Bsdf& bsdf, const SurfacePoint& sp, const Vec3& wo, TransportMode mode, SampleSource& u,
@@ -83,24 +43,10 @@ bool VcmTracer::scatter(const Bsdf& bsdf, const SurfacePoint& sp, const Vec3& wo
   if (mode == TransportMode::Importance) scale *= shadingCorrection(sp, wo, bs->wi);
   s.beta *= bs->f * scale;
   if (isBlack(s.beta) || !isFinite(s.beta)) return false;
-  const float cosOut = std::abs(glm::dot(sp.ng, bs->wi));
-  if (bsdf.isDelta()) {
-    s.dVCM = 0.0f;
-    s.dVC *= mis(cosOut);
-    s.dVM *= mis(cosOut);
-  } else {
-    const float pdfDir = bsdf.pdf(wo, bs->wi) * q, pdfRev = bsdf.pdf(bs->wi, wo) * q;
-    if (!(pdfDir > 0.0f)) return false;
-    const float k = mis(cosOut / pdfDir);
-    s.dVC = k * (s.dVC * mis(pdfRev) + s.dVCM + vmWeight_);
-    s.dVM = k * (s.dVM * mis(pdfRev) + s.dVCM * vcWeight_ + 1.0f);
-    s.dVCM = mis(1.0f / pdfDir);
-    s.specular = false;
-  }
+  if (!mis_.scatter(s, bsdf, sp, wo, bs->wi)) return false;
   const Ray ray = ctx_.tracer.spawn(sp, bs->wi);
   s.origin = ray.origin;
   s.dir = ray.dir;
-  s.last = sp.p;
   return true;
 }
 
@@ -112,12 +58,12 @@ void VcmTracer::traceLightPath(SampleSource& u, std::vector<LightVertex>& store,
   while (s.length < maxDepth - 1) {
     SurfacePoint hit;
     const Vec3 from = s.last;
-    if (!arrive(s, hit)) return;
+    if (!advance(s, hit)) return;
     const Vec3 wo = glm::normalize(from - hit.p);
     const Bsdf bsdf(ctx_.scene.materials[hit.material], hit.ns, hit.ng);
     if (!bsdf.isDelta()) {
       store.push_back(LightVertex{hit, wo, s.beta, s.dVCM, s.dVC, s.dVM, s.length});
-      if (connects()) connectToCamera(store.back(), bsdf, splats);
+      if (mis_.connects()) connectToCamera(store.back(), bsdf, splats);
     }
     if (s.length >= maxDepth - 1 || !scatter(bsdf, hit, wo, TransportMode::Importance, u, SampleStream::Light, s))
       return;
@@ -137,11 +83,8 @@ void VcmTracer::connectToCamera(const LightVertex& y, const Bsdf& bsdf, PathSamp
   const float cosCamera = glm::dot(ctx_.camera.forward(), -w);
   const Color value =
       y.beta * f * (std::abs(glm::dot(y.sp.ns, w)) * cosCamera / dist2 * ctx_.camera.importance(-w));
-  const float q = continuationProbability(bsdf.material());
-  const float cameraPdfA = ctx_.camera.pdfDirection(-w) * std::abs(glm::dot(y.sp.ng, w)) / dist2;
-  const float wLight = mis(cameraPdfA) * (vmWeight_ + y.dVCM + y.dVC * mis(bsdf.pdf(w, y.wo) * q));
   if (ctx_.tracer.occludedToPoint(y.sp.p, y.sp.ng, ctx_.camera.position())) return;
-  splats.add(*fp, value / (wLight + 1.0f), PathClass::L4);
+  splats.add(*fp, value * mis_.lightTracingWeight(y, bsdf), PathClass::L4);
 }
 
 }  // namespace relt
