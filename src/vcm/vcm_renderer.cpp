@@ -4,13 +4,14 @@
 #include <cmath>
 
 #include "camera/film_position.h"
+#include "core/low_discrepancy.h"
 #include "core/rng.h"
 #include "parallel/workers.h"
 
 namespace relt {
 namespace {
 
-constexpr uint64_t kLightPathPurpose = 0x7c41, kCameraPathPurpose = 0x7c43;
+constexpr uint64_t kLightPathPurpose = 0x7c41, kCameraPathPurpose = 0x7c43, kPixelShiftPurpose = 0x7c47;
 
 }  // namespace
 
@@ -82,7 +83,10 @@ void VcmRenderer::traceLightPaths(const VcmTracer& tracer, uint64_t iteration) {
   pathStart_.push_back(uint32_t(vertices_.size()));
 }
 
-// Rows dealt to the workers in turn; pixel p's camera subpath connects to light subpath p.
+// Rows dealt to the workers in turn; pixel p's camera subpath connects to light subpath p. Its
+// position in the pixel is point i of a (0,2)-sequence shifted per pixel (as the direct-emission
+// pass's, render/renderer.cpp): the emitters' outlines, seen directly and so by one technique
+// only, are resolved far better than by random positions.
 void VcmRenderer::traceCameraPaths(const VcmTracer& tracer, uint64_t iteration, const HashGrid* grid) {
   runOnWorkers(workers_, [&](int w) {
     PathSample sample;
@@ -90,7 +94,9 @@ void VcmRenderer::traceCameraPaths(const VcmTracer& tracer, uint64_t iteration, 
       for (int x = 0; x < width_; ++x) {
         const uint32_t pixel = uint32_t(row) * uint32_t(width_) + uint32_t(x);
         IndependentSource u(hashKey(seed_, kCameraPathPurpose, iteration, pixel));
-        const Vec2 film = positionInPixel(x, row, u.next2(SampleStream::Camera));
+        Rng shift(hashKey(seed_, kPixelShiftPurpose, pixel));
+        const uint32_t sx = shift.nextU32(), sy = shift.nextU32();
+        const Vec2 film = positionInPixel(x, row, shiftedSobol02(uint32_t(iteration), sx, sy));
         const std::span<const LightVertex> own(vertices_.data() + pathStart_[pixel],
                                                pathStart_[pixel + 1] - pathStart_[pixel]);
         sample.clear();

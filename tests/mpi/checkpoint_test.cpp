@@ -114,16 +114,34 @@ TEST(Checkpoint, MarkovChainRendersResumedAreTheRendersThatNeverStopped) {
   }
 }
 
+namespace {
+
+// cornell-box with `common` for `total` passes on 2 ranks, and for `part` with a checkpoint that
+// is then resumed to `total` on 2, 1 and 3 ranks (expectResumedIs); returns the checkpoint's folder.
+std::string expectPassesResumed(const std::string& name, const std::string& common, int part, int total) {
+  const std::string dir = makeTempDir("checkpoint-" + name), spp = " --spp " + std::to_string(total);
+  render(2, "cornell-box", "-o " + dir + "/whole.exr" + spp + common);
+  render(2, "cornell-box", "-o " + dir + "/part.exr --spp " + std::to_string(part) + " --checkpoint " + dir + "/ck" + common);
+  expectResumedIs(readExr(dir + "/whole.exr"), dir, "cornell-box", spp + " --resume " + dir + "/ck" + common);
+  return dir;
+}
+
+}  // namespace
+
 // erpt: the film, the passes done, the counters, the proposal tally and the normaliser (the
 // bootstrap is not run again).
 TEST(Checkpoint, ErptResumedIsTheRenderThatNeverStopped) {
-  const std::string dir = makeTempDir("checkpoint-erpt");
-  const std::string common = " --integrator erpt --erpt-proposal-filter --width 40 --height 30 --seed 3";
-  render(2, "cornell-box", "-o " + dir + "/whole.exr --spp 6" + common);
-  render(2, "cornell-box", "-o " + dir + "/half.exr --spp 2 --checkpoint " + dir + "/ck" + common);
-  expectResumedIs(readExr(dir + "/whole.exr"), dir, "cornell-box", "--spp 6 --resume " + dir + "/ck" + common);
+  const std::string dir =
+      expectPassesResumed("erpt", " --integrator erpt --erpt-proposal-filter --width 40 --height 30 --seed 3", 2, 6);
   expectRefused(dir, " --spp 6 --integrator pt --width 40 --height 30 --seed 3");
   expectRefused(dir, " --spp 6 --integrator erpt --erpt-proposal-filter --width 40 --height 30 --seed 4");
+}
+
+// vcm's checkpoint holds the film and the iterations done: resumed on any rank count it goes on
+// with the next iteration.
+TEST(Checkpoint, VcmResumedIsTheRenderThatNeverStopped) {
+  const std::string dir = expectPassesResumed("vcm", " --integrator vcm --width 40 --height 30 --seed 3", 3, 7);
+  expectRefused(dir, " --spp 7 --integrator vcm --vcm-mode bpt --width 40 --height 30 --seed 3");
 }
 
 // SIGTERM mid-render (to mpirun, which forwards it): every rank stops at the next round, writes

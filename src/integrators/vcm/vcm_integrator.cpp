@@ -2,10 +2,6 @@
 // MIS (src/vcm).
 #include "integrators/vcm/vcm_integrator.h"
 
-#include <algorithm>
-
-#include "core/error.h"
-#include "integrators/option_checks.h"
 #include "integrators/vcm/vcm_render.h"
 #include "integrators/vcm/vcm_settings.h"
 
@@ -29,13 +25,6 @@ void addVcmOptions(CLI::App& cmd, IntegratorSettings& own) {
       ->capture_default_str();
 }
 
-// Snapshots and checkpoints are not written by vcm yet: asking for them is refused, not ignored.
-void validateVcm(RenderSettings&, const GivenOptions& given) {
-  for (const char* option : {"--checkpoint", "--checkpoint-every", "--resume", "--snapshot-every"})
-    if (std::find(given.begin(), given.end(), option) != given.end())
-      throw InputError("", option, "vcm does not write snapshots or checkpoints yet");
-}
-
 void addVcmSettingsJson(const RenderSettings& s, nlohmann::json& j) {
   const VcmSettings& v = s.own.get<VcmIntegratorSettings>().vcm;
   j["vcm_mode"] = vcmModeName(v.mode);
@@ -56,7 +45,6 @@ const IntegratorEntry& vcmIntegrator() {
     e.sharedOptions = {"--spp"};
     e.makeSettings = makeSettingsOf<VcmIntegratorSettings>;
     e.addOptions = addVcmOptions;
-    e.validate = validateVcm;
     e.render = renderVcm;
     return e;
   }();
