@@ -15,6 +15,25 @@ constexpr uint64_t kLightPathPurpose = 0x7c41, kCameraPathPurpose = 0x7c43, kPix
 
 }  // namespace
 
+double pixelFootprint(const PathContext& ctx) {
+  const Camera& camera = ctx.camera;
+  const int w = camera.width(), h = camera.height();
+  std::vector<float> distances;
+  for (int j = 0; j < 16; ++j)
+    for (int i = 0; i < 16; ++i) {
+      const Vec2 film((float(i) + 0.5f) * float(w) / 16.0f, (float(j) + 0.5f) * float(h) / 16.0f);
+      SurfacePoint hit;
+      float distance;
+      if (ctx.tracer.intersect(Ray{camera.position(), camera.direction(film), INFINITY}, hit, distance))
+        distances.push_back(distance);
+    }
+  if (distances.empty()) return 1e-3 * double(glm::length(ctx.scene.bounds.diagonal()));
+  std::nth_element(distances.begin(), distances.begin() + distances.size() / 2, distances.end());
+  const Vec2 centre(float(w) / 2.0f, float(h) / 2.0f);
+  const float angle = glm::length(camera.direction(centre + Vec2(1.0f, 0.0f)) - camera.direction(centre));
+  return double(distances[distances.size() / 2]) * double(angle);
+}
+
 double vcmRadius(double r1, double alpha, uint64_t iteration) {
   return r1 * std::pow(double(iteration + 1), 0.5 * (alpha - 1.0));
 }
@@ -27,7 +46,7 @@ VcmRenderer::VcmRenderer(const PathContext& ctx, const VcmSettings& settings, ui
       width_(width),
       height_(height),
       workers_(std::max(threads, 1)),
-      radius1_(settings.radius * double(glm::length(ctx.scene.bounds.diagonal()))),
+      radius1_(settings.radius * pixelFootprint(ctx)),
       workerVertices_(size_t(workers_)) {
   for (int w = 0; w < workers_; ++w) workerFilms_.emplace_back(width, height);
 }

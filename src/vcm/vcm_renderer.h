@@ -13,10 +13,14 @@ namespace relt {
 
 struct VcmSettings {
   VcmMode mode = VcmMode::Vcm;
-  double radius = 0.005;  // the first iteration's merging radius, as a fraction of the scene's diagonal
+  double radius = 2.0;   // the first iteration's merging radius, in pixel footprints (pixelFootprint)
   double alpha = 0.75;    // r_i = r_1 i^((alpha - 1) / 2): the radius shrinks, the bias vanishes
 };
 
+// The width a pixel covers at the median distance of the first hits of camera rays through a 16 x
+// 16 grid over the film: merging within a few of them blurs the light by about as many pixels,
+// whatever the resolution, and the light vertices within the radius stay as many.
+double pixelFootprint(const PathContext& ctx);
 // The merging radius of iteration i (from 0) for a first radius r1.
 double vcmRadius(double r1, double alpha, uint64_t iteration);
 

@@ -134,7 +134,7 @@ TEST(IntegratorAgreement, ErptAndBdptAgreeOnCornellBox) {
 }
 
 // vcm with connections only is bdpt's estimator (unbiased); with merging it is biased by its
-// radius, which at the default (0.005 of the diagonal, shrinking) is below these tests' error on
+// radius, which at the default (two pixel footprints, shrinking) is below these tests' error on
 // cornell-box's diffuse walls.
 TEST(IntegratorAgreement, VcmConnectionsOnlyAndBdptAgreeOnCornellBox) {
   expectAgreementOnCornellBox("vcm", "bdpt", 16, 10,

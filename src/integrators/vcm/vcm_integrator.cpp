@@ -17,8 +17,9 @@ void addVcmOptions(CLI::App& cmd, IntegratorSettings& own) {
       ->check(CLI::IsMember({"vcm", "bpt", "ppm"}))
       ->default_str(vcmModeName(v.mode));
   cmd.add_option("--vcm-radius", v.radius,
-                 "vcm: the first iteration's merging radius as a fraction of the scene's bounding-box diagonal")
-      ->check(CLI::Range(1e-7, 1.0))
+                 "vcm: the first iteration's merging radius in pixel footprints (the width a pixel covers at the "
+                 "median distance of what the camera sees)")
+      ->check(CLI::Range(1e-3, 1e4))
       ->capture_default_str();
   cmd.add_option("--vcm-alpha", v.alpha, "vcm: the radius of iteration i is r_1 i^((alpha - 1) / 2)")
       ->check(CLI::Range(0.0, 1.0))
