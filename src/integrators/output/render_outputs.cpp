@@ -14,13 +14,13 @@ namespace {
 uint64_t nonFinitePixelsZeroed = 0;
 
 // What an EXR says of its render: the integrator, the settings, the commit, and for the final
-// image (`stats` given) the samples or mutations taken and the seconds.
+// image (`stats` given) the samples, mutations or iterations taken and the seconds.
 ImageAttributes renderAttributes(const RenderSettings& settings, const nlohmann::json& stats) {
   ImageAttributes a = {{"relt:integrator", settings.integrator.name},
                        {"relt:settings", settings.toJson().dump()},
                        {"relt:commit", RELT_COMMIT}};
   if (stats.is_null()) return a;
-  for (const char* key : {"spp", "image_rows_of_the_stopped_pass", "mutations", "render_seconds", "interrupted"})
+  for (const char* key : {"spp", "image_rows_of_the_stopped_pass", "mutations", "iterations", "render_seconds", "interrupted"})
     if (stats.contains(key)) a.emplace_back(std::string("relt:") + key, stats[key].dump());
   return a;
 }
