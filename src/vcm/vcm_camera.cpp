@@ -7,7 +7,8 @@
 namespace relt {
 
 void VcmTracer::traceCameraPath(const Vec2& film, SampleSource& u, std::span<const LightVertex> own,
-                                std::span<const LightVertex> all, const HashGrid* grid, PathSample& out) const {
+                                std::span<const LightVertex* const> all, const HashGrid* grid,
+                                PathSample& out) const {
   VcmSubpath s;
   s.dir = ctx_.camera.direction(film);
   const float pdfCamera = ctx_.camera.pdfDirection(s.dir);
@@ -80,10 +81,10 @@ Color VcmTracer::connect(const VcmSubpath& s, const SurfacePoint& x, const Vec3&
 
 // Vertex merging: the light vertices within r of x, as if x's subpath had reached each of them.
 Color VcmTracer::merge(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf,
-                       std::span<const LightVertex> all, const HashGrid& grid) const {
+                       std::span<const LightVertex* const> all, const HashGrid& grid) const {
   Color sum(0.0f);
   grid.forEachNear(x.p, [&](uint32_t i) {
-    const LightVertex& y = all[i];
+    const LightVertex& y = *all[i];
     if (y.length + s.length > ctx_.settings.maxDepth) return;
     const Color f = bsdf.eval(wo, y.wo, TransportMode::Radiance);
     if (!isBlack(f)) sum += f * y.beta * mis_.mergeWeight(s, wo, bsdf, y);

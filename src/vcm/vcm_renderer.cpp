@@ -61,7 +61,7 @@ void VcmRenderer::render(uint64_t iteration, Film& film) {
   const bool merging = settings_.mode != VcmMode::Bpt && it.radius > 0.0f;
   if (merging) {
     positions_.resize(vertices_.size());
-    for (size_t i = 0; i < vertices_.size(); ++i) positions_[i] = vertices_[i].sp.p;
+    for (size_t i = 0; i < vertices_.size(); ++i) positions_[i] = vertices_[i]->sp.p;
     grid_.build(positions_, it.radius);
   }
   traceCameraPaths(tracer, iteration, merging ? &grid_ : nullptr);
@@ -75,7 +75,8 @@ void VcmRenderer::render(uint64_t iteration, Film& film) {
   counters_.lastRadius = it.radius;
 }
 
-// Worker w traces a contiguous block of the light subpaths; the blocks are then joined in order.
+// Worker w traces a contiguous block of the light subpaths into its own store; the blocks are then
+// indexed in order (not copied: at 1024x1024 they hold millions of vertices).
 void VcmRenderer::traceLightPaths(const VcmTracer& tracer, uint64_t iteration) {
   const uint32_t paths = uint32_t(width_) * uint32_t(height_);
   std::vector<std::vector<uint32_t>> starts(static_cast<size_t>(workers_));
@@ -94,12 +95,14 @@ void VcmRenderer::traceLightPaths(const VcmTracer& tracer, uint64_t iteration) {
     }
   });
   vertices_.clear();
-  pathStart_.clear();
+  paths_.clear();
   for (int w = 0; w < workers_; ++w) {
-    for (uint32_t s : starts[size_t(w)]) pathStart_.push_back(uint32_t(vertices_.size()) + s);
-    vertices_.insert(vertices_.end(), workerVertices_[size_t(w)].begin(), workerVertices_[size_t(w)].end());
+    const std::vector<LightVertex>& block = workerVertices_[size_t(w)];
+    const std::vector<uint32_t>& start = starts[size_t(w)];
+    for (size_t j = 0; j < start.size(); ++j)
+      paths_.emplace_back(block.data() + start[j], (j + 1 < start.size() ? start[j + 1] : block.size()) - start[j]);
+    for (const LightVertex& v : block) vertices_.push_back(&v);
   }
-  pathStart_.push_back(uint32_t(vertices_.size()));
 }
 
 // Rows dealt to the workers in turn; pixel p's camera subpath connects to light subpath p. Its
@@ -116,10 +119,8 @@ void VcmRenderer::traceCameraPaths(const VcmTracer& tracer, uint64_t iteration, 
         Rng shift(hashKey(seed_, kPixelShiftPurpose, pixel));
         const uint32_t sx = shift.nextU32(), sy = shift.nextU32();
         const Vec2 film = positionInPixel(x, row, shiftedSobol02(uint32_t(iteration), sx, sy));
-        const std::span<const LightVertex> own(vertices_.data() + pathStart_[pixel],
-                                               pathStart_[pixel + 1] - pathStart_[pixel]);
         sample.clear();
-        tracer.traceCameraPath(film, u, own, vertices_, grid, sample);
+        tracer.traceCameraPath(film, u, paths_[pixel], vertices_, grid, sample);
         workerFilms_[size_t(w)].addSample(sample);
       }
     }

@@ -4,6 +4,7 @@
 // worker threads. Every random number is keyed by (seed, iteration, path), so an iteration's
 // estimate is the same whichever process and threads render it (up to the order of sums).
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "film/film.h"
@@ -48,10 +49,10 @@ class VcmRenderer {
   uint64_t seed_;
   int width_, height_, workers_;
   double radius1_;
-  std::vector<std::vector<LightVertex>> workerVertices_;  // worker w's block of light subpaths
-  std::vector<LightVertex> vertices_;                     // every light vertex of the iteration, by path
-  std::vector<uint32_t> pathStart_;                       // light path j's: vertices_[pathStart_[j] ..)
-  std::vector<Vec3> positions_;
+  std::vector<std::vector<LightVertex>> workerVertices_;  // worker w's block of light subpaths, kept there
+  std::vector<std::span<const LightVertex>> paths_;       // light subpath j's vertices
+  std::vector<const LightVertex*> vertices_;              // every light vertex of the iteration, by path
+  std::vector<Vec3> positions_;                           // theirs, which the grid indexes
   std::vector<Film> workerFilms_;
   HashGrid grid_;
   VcmCounters counters_;

@@ -25,7 +25,7 @@ class VcmTracer {
   // to `own` (the vertices of one light subpath) and merges with the vertices `grid` indexes in
   // `all` (null grid: no merging).
   void traceCameraPath(const Vec2& film, SampleSource& u, std::span<const LightVertex> own,
-                       std::span<const LightVertex> all, const HashGrid* grid, PathSample& out) const;
+                       std::span<const LightVertex* const> all, const HashGrid* grid, PathSample& out) const;
 
  private:
   bool startLightPath(SampleSource& u, VcmSubpath& s) const;
@@ -38,7 +38,7 @@ class VcmTracer {
   Color nextEvent(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf, SampleSource& u) const;
   Color connect(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf, const LightVertex& y) const;
   Color merge(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf,
-              std::span<const LightVertex> all, const HashGrid& grid) const;
+              std::span<const LightVertex* const> all, const HashGrid& grid) const;
 
   const PathContext& ctx_;
   VcmMis mis_;
