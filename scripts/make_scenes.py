@@ -772,6 +772,71 @@ def mirror_balls():
     return g, settings(10, (640, 480))
 
 
+@scene
+def glossy_caustics():
+    """Šik's thesis ch. 5 (the glossy ring): glossy metals that throw and reflect caustics."""
+    g = GltfScene("glossy-caustics")
+    g.add_mesh("floor", rect_y(-4.0, 4.0, -4.0, 4.0, 0.0, True), lambert("floor_diffuse", (0.7, 0.7, 0.7)))
+    g.add_mesh("back_wall", rect_z(-1.6, -4.0, 4.0, 0.0, 3.0, True), lambert("wall_diffuse", (0.6, 0.6, 0.58)))
+    # a glossy gold ring (alpha 0.01) throwing its cardioid onto the floor, and a glossy silver torus
+    # (alpha 0.0625) whose concave inner side focuses the light and whose outer side reflects the
+    # ring's caustic
+    g.add_mesh("ring", faceted_ring((-0.55, 0.001, 0.15), 0.45, 0.41, 0.2, 64),
+               conductor("glossy_gold", GOLD_F0, 0.1), closed="outward")
+    g.add_mesh("torus", torus((0.75, 0.121, -0.35), 0.42, 0.12, 64, 32),
+               conductor("glossy_silver", SILVER_F0, 0.25), closed="outward")
+    lc = (-2.3, 1.2, 1.1)
+    to_objects = normalize(sub((0.1, 0.1, -0.1), lc))
+    u = normalize(cross(to_objects, (0.0, 1.0, 0.0)))
+    v = cross(u, to_objects)
+    g.add_mesh("light", facing_quad(lc, mul(u, 0.075), mul(v, 0.075), to_objects), emitter("small_light", (500.0,) * 3))
+    g.camera("camera", (0.0, 1.9, 2.6), (0.1, 0.15, -0.3), 0.62)
+    return g, settings(8, (512, 512))
+
+
+@scene
+def living_room():
+    """A closed room lit only through one window, by a sky and a sun outside."""
+    g = GltfScene("living-room")
+    W, D0, D1, H = 2.5, -3.0, 2.0, 2.6  # half width, back and front z, height
+    wz0, wz1, wy0, wy1 = -2.1, -0.7, 0.9, 2.1  # the window in the right wall (x = W)
+    wall = lambert("wall_paint", (0.78, 0.76, 0.72))
+    g.add_mesh("floor", rect_y(-W, W, D0, D1, 0.0, True), conductor("glossy_floor", (0.35, 0.25, 0.17), 0.3))
+    g.add_mesh("ceiling", rect_y(-W, W, D0, D1, H, False), wall)
+    g.add_mesh("back_wall", rect_z(D0, -W, W, 0.0, H, True), wall)
+    g.add_mesh("front_wall", rect_z(D1, -W, W, 0.0, H, False), wall)
+    g.add_mesh("left_wall", rect_x(-W, 0.0, H, D0, D1, True), lambert("blue_paint", (0.25, 0.35, 0.55)))
+    right = MeshData()  # around the window
+    right.append(rect_x(W, 0.0, wy0, D0, D1, False))
+    right.append(rect_x(W, wy1, H, D0, D1, False))
+    right.append(rect_x(W, wy0, wy1, D0, wz0, False))
+    right.append(rect_x(W, wy0, wy1, wz1, D1, False))
+    g.add_mesh("right_wall", right, wall)
+    # outside: a sky facing the window, and a small bright sun high above it, so that a patch of sun
+    # falls through the window onto the floor and the table
+    g.add_mesh("sky", rect_x(W + 6.0, -2.0, 8.0, -10.0, 6.0, False), emitter("sky", (1.8, 2.2, 3.2)))
+    window = (W, 0.5 * (wy0 + wy1), 0.5 * (wz0 + wz1))
+    sun = add(window, mul(normalize(sub(window, (0.6, 0.75, -1.3))), 4.5))  # beyond the window from the table
+    to_window = normalize(sub(window, sun))
+    u = normalize(cross(to_window, (0.0, 0.0, 1.0)))
+    v = cross(u, to_window)
+    g.add_mesh("sun", facing_quad(sun, mul(u, 0.12), mul(v, 0.12), to_window), emitter("sun", (4000.0, 3700.0, 3200.0)))
+    # a table with a glass top, glass and metal objects on it, and a mirror ball on the floor
+    g.add_mesh("table_base", box((0.6, 0.35, -1.3), (0.5, 0.35, 0.35), math.radians(10.0), open_bottom=True),
+               lambert("table_wood", (0.45, 0.3, 0.18)))
+    g.add_mesh("glass_top", box((0.6, 0.725, -1.3), (0.62, 0.025, 0.45), math.radians(10.0)),
+               dielectric("glass", 1.5), closed="outward")
+    g.add_mesh("glass_ball", icosphere((0.45, 0.751 + 0.14, -1.25), 0.14, 3, smooth=True), dielectric("glass", 1.5),
+               closed="outward")
+    g.add_mesh("metal_vase", icosphere((0.85, 0.751 + 0.1, -1.45), 0.1, 3, smooth=True),
+               conductor("copper", (0.955, 0.638, 0.538), 0.15), closed="outward")
+    g.add_mesh("mirror_ball", icosphere((-0.9, 0.001 + 0.3, -1.9), 0.3, 4, smooth=True),
+               conductor("silver_mirror", SILVER_F0, 0.0), closed="outward")
+    g.add_mesh("sofa", box((-1.7, 0.3, -0.2), (0.45, 0.3, 1.0)), lambert("sofa_fabric", (0.55, 0.2, 0.15)))
+    g.camera("camera", (-1.6, 1.5, 1.7), (0.5, 0.6, -1.4), 0.95)
+    return g, settings(12, (640, 480))
+
+
 # --------------------------------------------------------------------------------------------
 # README
 # --------------------------------------------------------------------------------------------
@@ -882,6 +947,37 @@ DESCRIPTIONS = {
         "materials": "walls (0.75, 0.74, 0.7), floor (0.45, 0.3, 0.18), door (0.55, 0.12, 0.08), "
                      "cabinet (0.35, 0.22, 0.12), table (0.7, 0.7, 0.68), rug (0.8, 0.78, 0.7), all Lambert.",
     },
+    "glossy-caustics": {
+        "figure": "Šik thesis, ch. 5 (glossy ring)",
+        "source": "Šik's thesis (seeds/004), chapter 5: the tempered family was made for glossy metals, "
+                  "whose caustics a path tracer and BDPT find as rarely as a mirror's (the ring and dragon "
+                  "scenes); this is the ring of `ring` made glossy, with a glossy torus beside it.",
+        "what": "A diffuse floor and back wall, a faceted gold ring with roughness 0.1 (GGX alpha 0.01) and a "
+                "smooth-shaded silver torus with roughness 0.25 (alpha 0.0625), lit by one small bright quad "
+                "low at the left-front (radiance 500): the ring throws its cardioid onto the floor inside it, "
+                "the torus's inner side focuses a caustic and its outer side reflects the ring's.",
+        "why": "Glossy-diffuse-glossy light: caustics of near-specular metals, seen directly and in a "
+               "glossy reflection, where connections fail for the same reason as at mirrors.",
+        "materials": "Lambert floor (0.7) and wall (0.6, 0.6, 0.58); gold (F0 (1, 0.766, 0.336)) and silver "
+                     "(F0 (0.972, 0.96, 0.915)) conductors, GGX; emitter (500, 500, 500).",
+    },
+    "living-room": {
+        "figure": "window-lit interior (thesis ch. 6)",
+        "source": "The window-lit interiors of the thesis's chapter 6 (seeds/004), where VCM and its "
+                  "Metropolised version are compared: light comes in through one opening only.",
+        "what": "A closed 5 x 2.6 x 5 room with one 1.4 x 1.2 window in its right wall. Outside, a large "
+                "sky quad facing the window (radiance (1.8, 2.2, 3.2)) and, between them, a small sun quad "
+                "(radiance about 4000) in line with the window and the table, so that its light falls "
+                "through the window onto the table's glass. "
+                "Inside: a glossy floor (roughness 0.3, alpha 0.09), a wooden table with a glass top, a "
+                "glass ball and a copper ball (roughness 0.15) on it, a mirror ball on the floor, a sofa.",
+        "why": "Most of the room is lit by light that bounced once inside (the window's light is "
+               "complex visibility), with caustics from the glass seen directly and in the glossy floor: "
+               "the case where merging and Markov chains are both needed.",
+        "materials": "Lambert walls (0.78, 0.76, 0.72), left wall (0.25, 0.35, 0.55), table (0.45, 0.3, "
+                     "0.18), sofa (0.55, 0.2, 0.15); glossy floor conductor F0 (0.35, 0.25, 0.17) roughness "
+                     "0.3; glass ior 1.5; copper F0 (0.955, 0.638, 0.538) roughness 0.15; silver mirror.",
+    },
     "mirror-balls": {
         "figure": "Šik thesis, Fig. 5.19",
         "source": "Šik's thesis (seeds/004), Fig. 5.19 (the Mirror-balls scene, 640 x 480 in Table 5.4).",
@@ -940,7 +1036,8 @@ def readme(built):
     w("  - Lambert: `metallicFactor` 0, `baseColorFactor` = albedo, `roughnessFactor` 1.")
     w("  - Conductor: `metallicFactor` 1, `baseColorFactor` = F0 (Schlick), `roughnessFactor` r, "
       "alpha = r^2, r = 0 is a perfect mirror. Optional material `extras.microfacet` = \"beckmann\" "
-      "(default GGX). All conductors in this suite are perfect mirrors.")
+      "(default GGX). The conductors are perfect mirrors except the glossy metals of glossy-caustics and "
+      "living-room.")
     w("  - Dielectric: `KHR_materials_transmission` (`transmissionFactor` 1) + `KHR_materials_ior` "
       "(1.5 glass, 1.33 water), `metallicFactor` 0, `roughnessFactor` 0 (smooth), white base colour. "
       "The side the geometric normal points to is the OUTSIDE (index 1), so every glass or water mesh "
