@@ -76,8 +76,10 @@ void VcmLoop::printProgress(double agreed, uint64_t budget, double& lastPrint) c
   lastPrint = agreed;
   const RenderSettings& s = settings();
   const double fraction = s.seconds ? agreed / *s.seconds : double(done) / double(budget);
+  // An iteration is one camera sample (and one light subpath) per pixel.
+  const double samples = double(done) * double(s.width) * double(s.height);
   std::fprintf(stderr, ::isatty(STDERR_FILENO) ? "\r%s" : "%s\n",
-               progressLine(std::min(fraction, 1.0), agreed, double(done) / agreed, "iterations").c_str());
+               progressLine(std::min(fraction, 1.0), agreed, samples / agreed, "samples").c_str());
 }
 
 }  // namespace
