@@ -192,6 +192,15 @@ def facing_quad(center, u, v, facing):
     return quad(corners, facing)
 
 
+def quad_towards(center, target, half, up=(0.0, 1.0, 0.0)):
+    """Square of half-size `half` centred at `center`, its front facing `target` (a small light aimed at
+    the objects); `up` must not be parallel to the direction to the target."""
+    to_target = normalize(sub(target, center))
+    u = normalize(cross(to_target, up))
+    v = cross(u, to_target)
+    return facing_quad(center, mul(u, half), mul(v, half), to_target)
+
+
 def box(center, half, angle=0.0, open_bottom=False):
     """Closed box (8 shared vertices, 12 triangles, outward), rotated about Y by angle.
     open_bottom drops the -Y face (for opaque blocks standing on a floor, like the classic Cornell box)."""
@@ -661,11 +670,7 @@ def ring():
                closed="outward")
     # small square light, low on the left-front, facing the ring: its rays hit the inner wall of the ring at
     # a grazing angle and focus into the cardioid (nephroid) caustic on the floor inside the ring
-    lc = (-2.4, 1.3, 1.0)
-    to_ring = normalize(sub((0.0, 0.1, 0.0), lc))
-    u = normalize(cross(to_ring, (0.0, 1.0, 0.0)))
-    v = cross(u, to_ring)
-    g.add_mesh("light", facing_quad(lc, mul(u, 0.075), mul(v, 0.075), to_ring), emitter("small_light", (500.0,) * 3))
+    g.add_mesh("light", quad_towards((-2.4, 1.3, 1.0), (0.0, 0.1, 0.0), 0.075), emitter("small_light", (500.0,) * 3))
     g.camera("camera", (0.0, 1.9, 2.5), (0.0, 0.1, -0.2), 0.62)
     return g, settings(8, (512, 512))
 
@@ -785,11 +790,7 @@ def glossy_caustics():
                conductor("glossy_gold", GOLD_F0, 0.1), closed="outward")
     g.add_mesh("torus", torus((0.75, 0.121, -0.35), 0.42, 0.12, 64, 32),
                conductor("glossy_silver", SILVER_F0, 0.25), closed="outward")
-    lc = (-2.3, 1.2, 1.1)
-    to_objects = normalize(sub((0.1, 0.1, -0.1), lc))
-    u = normalize(cross(to_objects, (0.0, 1.0, 0.0)))
-    v = cross(u, to_objects)
-    g.add_mesh("light", facing_quad(lc, mul(u, 0.075), mul(v, 0.075), to_objects), emitter("small_light", (500.0,) * 3))
+    g.add_mesh("light", quad_towards((-2.3, 1.2, 1.1), (0.1, 0.1, -0.1), 0.075), emitter("small_light", (500.0,) * 3))
     g.camera("camera", (0.0, 1.9, 2.6), (0.1, 0.15, -0.3), 0.62)
     return g, settings(8, (512, 512))
 
@@ -817,10 +818,7 @@ def living_room():
     g.add_mesh("sky", rect_x(W + 6.0, -2.0, 8.0, -10.0, 6.0, False), emitter("sky", (1.8, 2.2, 3.2)))
     window = (W, 0.5 * (wy0 + wy1), 0.5 * (wz0 + wz1))
     sun = add(window, mul(normalize(sub(window, (0.6, 0.75, -1.3))), 4.5))  # beyond the window from the table
-    to_window = normalize(sub(window, sun))
-    u = normalize(cross(to_window, (0.0, 0.0, 1.0)))
-    v = cross(u, to_window)
-    g.add_mesh("sun", facing_quad(sun, mul(u, 0.12), mul(v, 0.12), to_window), emitter("sun", (4000.0, 3700.0, 3200.0)))
+    g.add_mesh("sun", quad_towards(sun, window, 0.12, up=(0.0, 0.0, 1.0)), emitter("sun", (4000.0, 3700.0, 3200.0)))
     # a table with a glass top, glass and metal objects on it, and a mirror ball on the floor
     g.add_mesh("table_base", box((0.6, 0.35, -1.3), (0.5, 0.35, 0.35), math.radians(10.0), open_bottom=True),
                lambert("table_wood", (0.45, 0.3, 0.18)))
