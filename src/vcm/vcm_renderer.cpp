@@ -69,10 +69,7 @@ void VcmRenderer::render(uint64_t iteration, Film& film) {
     film.addWeighted(f, 1.0);
     f.clear();
   }
-  ++counters_.iterations;
-  counters_.lightVertices += vertices_.size();
-  counters_.cameraPaths += uint64_t(width_) * height_;
-  counters_.lastRadius = it.radius;
+  lightVertices_ += vertices_.size();
 }
 
 // Worker w traces a contiguous block of the light subpaths into its own store; the blocks are then

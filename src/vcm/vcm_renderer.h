@@ -25,11 +25,6 @@ double pixelFootprint(const PathContext& ctx);
 // The merging radius of iteration i (from 0) for a first radius r1.
 double vcmRadius(double r1, double alpha, uint64_t iteration);
 
-struct VcmCounters {
-  uint64_t iterations = 0, lightVertices = 0, cameraPaths = 0;
-  double lastRadius = 0.0;
-};
-
 class VcmRenderer {
  public:
   VcmRenderer(const PathContext& ctx, const VcmSettings& settings, uint64_t seed, int width, int height, int threads);
@@ -37,7 +32,8 @@ class VcmRenderer {
   // Adds iteration i's estimate of the image to `film` (the image: the sum over iterations divided
   // by their number).
   void render(uint64_t iteration, Film& film);
-  const VcmCounters& counters() const { return counters_; }
+  // Light vertices stored over the iterations this process rendered.
+  uint64_t lightVertices() const { return lightVertices_; }
   double firstRadius() const { return radius1_; }
 
  private:
@@ -55,7 +51,7 @@ class VcmRenderer {
   std::vector<Vec3> positions_;                           // theirs, which the grid indexes
   std::vector<Film> workerFilms_;
   HashGrid grid_;
-  VcmCounters counters_;
+  uint64_t lightVertices_ = 0;
 };
 
 }  // namespace relt

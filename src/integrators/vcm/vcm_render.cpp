@@ -99,7 +99,7 @@ void renderVcm(RenderContext& c) {
   const uint64_t resumedAt = loop.done;
   loop.run();
   const Image image = loop.image();
-  const uint64_t lightVertices = job.allreduceSum(vcm.counters().lightVertices);
+  const uint64_t lightVertices = job.allreduceSum(vcm.lightVertices());
   const Gathered g = gatherAfterRender(job, loop.start, c.renderer, film, false);
   if (!job.isRoot()) return;
   nlohmann::json j = commonStats(settings, job, g, image);
