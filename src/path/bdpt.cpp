@@ -110,6 +110,7 @@ void Bdpt::generateCameraSubpath(const Vec2& film, SampleSource& source, size_t 
   const Vec3 dir = ctx_.camera.direction(film);
   randomWalk(Ray{c.sp.p, dir, INFINITY}, Color(1.0f), TransportMode::Radiance, maxVertices, source,
              SampleStream::Camera, camera_);
+  countSubpathVertices(ctx_, camera_.size() - 1);
 }
 
 void Bdpt::generateLightSubpath(SampleSource& source, size_t maxVertices) {
@@ -129,6 +130,7 @@ void Bdpt::generateLightSubpath(SampleSource& source, size_t maxVertices) {
   const Vec3 origin = lp.delta ? lp.sp.p : ctx_.tracer.offsetOrigin(lp.sp.p, lp.sp.ng, em.dir);
   randomWalk(Ray{origin, em.dir, INFINITY}, beta, TransportMode::Importance, maxVertices, source,
              SampleStream::Light, light_);
+  countSubpathVertices(ctx_, light_.size() - 1);
 }
 
 void Bdpt::trace(const Vec2& film, SampleSource& source, PathSample& out) {

@@ -32,7 +32,14 @@ struct PathContext {
   const LightSampler& lights;
   const Camera& camera;
   PathSettings settings;
+  // Surface vertices the bidirectional subpaths reached (bdpt and vcm, camera and light ones
+  // alike): their throughput is compared per vertex, where rays differ by technique. Null: not counted.
+  PerWorkerCount* subpathVertices = nullptr;
 };
+
+inline void countSubpathVertices(const PathContext& ctx, uint64_t n) {
+  if (ctx.subpathVertices && n) ctx.subpathVertices->add(n);
+}
 
 inline float misWeightTerm(float ratio, MisHeuristic h) { return h == MisHeuristic::Power ? ratio * ratio : ratio; }
 // The heuristic's exponent beta: weights go as density^beta (1 balance, 2 power).

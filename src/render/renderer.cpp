@@ -42,7 +42,7 @@ Renderer::Renderer(Scene scene, const RenderSettings& settings) : scene_(std::mo
   ps.maxDepth = settings_.maxDepth;
   ps.heuristic = settings_.heuristic;
   if (directEmissionApart(settings_)) ps.minDepth = 2;  // renderDirect estimates the rest
-  ctx_ = std::make_unique<PathContext>(PathContext{scene_, *tracer_, *lights_, *camera_, ps});
+  ctx_ = std::make_unique<PathContext>(PathContext{scene_, *tracer_, *lights_, *camera_, ps, &subpathVertices_});
   for (int w = 0; w < std::max(settings_.threads, 1); ++w) workers_.push_back(std::make_unique<RowWorker>(*ctx_));
 }
 

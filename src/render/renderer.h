@@ -47,6 +47,8 @@ class Renderer {
 
   uint64_t samples() const;
   uint64_t rays() const { return tracer_->rayCount(); }
+  // Surface vertices the bidirectional subpaths reached (path/path_context.h).
+  uint64_t subpathVertices() const { return subpathVertices_.total(); }
 
   // Film sums -> pixel values for `spp` samples per pixel.
   static Image resolve(const Film& film, const std::vector<double>& sums, double spp);
@@ -60,6 +62,7 @@ class Renderer {
   std::unique_ptr<LightSampler> lights_;
   std::unique_ptr<Camera> camera_;
   std::unique_ptr<PathContext> ctx_;
+  PerWorkerCount subpathVertices_;
   // What one worker thread's rows need of their own: a batch of neighbouring pixels (traced
   // together, see tracePaths), bdpt's subpaths, and the samples it took.
   struct RowWorker {

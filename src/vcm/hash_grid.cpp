@@ -3,7 +3,6 @@
 namespace relt {
 
 void HashGrid::build(std::span<const Vec3> points, float radius) {
-  points_ = points;
   radius2_ = radius * radius;
   inverseCell_ = 1.0f / (2.0f * radius);
   Bounds3 bounds;
@@ -22,6 +21,8 @@ void HashGrid::build(std::span<const Vec3> points, float radius) {
   order_.resize(points.size());
   std::vector<uint32_t> next(start_.begin(), start_.end() - 1);
   for (size_t i = 0; i < points.size(); ++i) order_[next[bucket[i]]++] = uint32_t(i);
+  sorted_.resize(points.size());
+  for (size_t k = 0; k < points.size(); ++k) sorted_[k] = points[order_[k]];
 }
 
 }  // namespace relt

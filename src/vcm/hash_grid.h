@@ -14,14 +14,14 @@ namespace relt {
 
 class HashGrid {
  public:
-  // Indexes `points` (kept by reference until the next build) for queries within `radius`.
+  // Indexes `points` (copied, in bucket order) for queries within `radius`.
   void build(std::span<const Vec3> points, float radius);
 
   // Calls found(i) for every point i within the radius of p (distance <= radius), in no
   // particular order but the same for the same points and p.
   template <class Found>
   void forEachNear(const Vec3& p, Found&& found) const {
-    if (points_.empty()) return;
+    if (sorted_.empty()) return;
     const Vec3 cell = (p - lo_) * inverseCell_;
     const Vec3 base = glm::floor(cell);
     // The neighbour on each axis is on the side of p within its cell.
@@ -34,7 +34,7 @@ class HashGrid {
       seen[k] = bucket;
       if (std::find(seen, seen + k, bucket) != seen + k) continue;  // two cells hashed alike: once
       for (uint32_t i = start_[bucket]; i < start_[bucket + 1]; ++i) {
-        const Vec3 d = points_[order_[i]] - p;
+        const Vec3 d = sorted_[i] - p;  // most candidates are farther: scanned in a row
         if (glm::dot(d, d) <= radius2_) found(order_[i]);
       }
     }
@@ -46,11 +46,11 @@ class HashGrid {
     return uint32_t(h % uint64_t(start_.size() - 1));
   }
 
-  std::span<const Vec3> points_;
   Vec3 lo_{0.0f};
   float inverseCell_ = 0.0f, radius2_ = 0.0f;
   std::vector<uint32_t> start_;  // bucket b's points are order_[start_[b] .. start_[b + 1])
   std::vector<uint32_t> order_;
+  std::vector<Vec3> sorted_;  // points[order_[i]]: a bucket's positions side by side
 };
 
 }  // namespace relt

@@ -83,12 +83,15 @@ Color VcmTracer::connect(const VcmSubpath& s, const SurfacePoint& x, const Vec3&
 Color VcmTracer::merge(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf,
                        std::span<const LightVertex* const> all, const HashGrid& grid) const {
   Color sum(0.0f);
+  uint64_t merged = 0;
   grid.forEachNear(x.p, [&](uint32_t i) {
     const LightVertex& y = *all[i];
     if (y.length + s.length > ctx_.settings.maxDepth) return;
+    ++merged;
     const Color f = bsdf.eval(wo, y.wo, TransportMode::Radiance);
     if (!isBlack(f)) sum += f * y.beta * mis_.mergeWeight(s, wo, bsdf, y);
   });
+  if (merges_ && merged) merges_->add(merged);
   return s.beta * sum * float(mis_.mergeNormalisation());
 }
 

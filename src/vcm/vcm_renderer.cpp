@@ -56,7 +56,7 @@ void VcmRenderer::render(uint64_t iteration, Film& film) {
   it.mode = settings_.mode;
   it.radius = float(vcmRadius(radius1_, settings_.alpha, iteration));
   it.lightPaths = double(width_) * height_;
-  const VcmTracer tracer(ctx_, it);
+  const VcmTracer tracer(ctx_, it, &merges_);
   traceLightPaths(tracer, iteration);
   const bool merging = settings_.mode != VcmMode::Bpt && it.radius > 0.0f;
   if (merging) {

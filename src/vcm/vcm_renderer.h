@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "film/film.h"
+#include "parallel/workers.h"
 #include "vcm/vcm_tracer.h"
 
 namespace relt {
@@ -34,6 +35,9 @@ class VcmRenderer {
   void render(uint64_t iteration, Film& film);
   // Light vertices stored over the iterations this process rendered.
   uint64_t lightVertices() const { return lightVertices_; }
+  // Light vertices merged with (within the radius of a camera vertex, the path no longer than the
+  // maximum depth) over those iterations.
+  uint64_t merges() const { return merges_.total(); }
   double firstRadius() const { return radius1_; }
 
  private:
@@ -52,6 +56,7 @@ class VcmRenderer {
   std::vector<Film> workerFilms_;
   HashGrid grid_;
   uint64_t lightVertices_ = 0;
+  PerWorkerCount merges_;
 };
 
 }  // namespace relt

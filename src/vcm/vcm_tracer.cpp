@@ -27,7 +27,9 @@ bool VcmTracer::startLightPath(SampleSource& u, VcmSubpath& s) const {
 
 bool VcmTracer::advance(VcmSubpath& s, SurfacePoint& hit) const {
   float distance;
-  return ctx_.tracer.intersect(Ray{s.origin, s.dir, INFINITY}, hit, distance) && mis_.arrive(s, hit);
+  if (!ctx_.tracer.intersect(Ray{s.origin, s.dir, INFINITY}, hit, distance)) return false;
+  countSubpathVertices(ctx_, 1);
+  return mis_.arrive(s, hit);
 }
 
 bool VcmTracer::scatter(const Bsdf& bsdf, const SurfacePoint& sp, const Vec3& wo, TransportMode mode, SampleSource& u,

@@ -16,7 +16,9 @@ namespace relt {
 
 class VcmTracer {
  public:
-  VcmTracer(const PathContext& ctx, const VcmIteration& iteration) : ctx_(ctx), mis_(ctx, iteration) {}
+  // `merges` (optional) counts the light vertices merged with.
+  VcmTracer(const PathContext& ctx, const VcmIteration& iteration, PerWorkerCount* merges = nullptr)
+      : ctx_(ctx), mis_(ctx, iteration), merges_(merges) {}
 
   // Traces one light subpath: appends its stored vertices to `store` and adds its light-tracing
   // splats to `splats`.
@@ -42,6 +44,7 @@ class VcmTracer {
 
   const PathContext& ctx_;
   VcmMis mis_;
+  PerWorkerCount* merges_;
 };
 
 }  // namespace relt

@@ -91,6 +91,7 @@ Gathered gatherAfterRender(Job& job, Clock::time_point renderStart, const Render
   g.renderSeconds = job.allreduceMax(secondsSince(renderStart));
   if (reduceFilm) job.reduceSumToRoot(film.data());
   g.rays = job.allreduceSum(renderer.rays());
+  g.subpathVertices = job.allreduceSum(renderer.subpathVertices());
   g.dropped = job.allreduceSum(film.droppedSamples());
   g.droppedPerRank = job.allgather(double(film.droppedSamples()));
   g.collective = job.allgather(job.collectiveSeconds());
@@ -110,6 +111,11 @@ nlohmann::json commonStats(const RenderSettings& settings, Job& job, const Gathe
   j["rays"] = g.rays;
   j["render_seconds"] = g.renderSeconds;
   j["rays_per_second"] = g.rays / std::max(g.renderSeconds, 1e-9);
+  if (g.subpathVertices > 0) {  // per core: the throughput bidirectional integrators are compared by
+    j["subpath_vertices"] = g.subpathVertices;
+    j["subpath_vertices_per_second_per_core"] =
+        double(g.subpathVertices) / std::max(g.renderSeconds, 1e-9) / double(job.size() * settings.threads);
+  }
   j["nan_inf_samples_dropped"] = g.dropped;
   j["nan_inf_samples_dropped_per_rank"] = counts(g.droppedPerRank);
   j["collective_seconds_per_rank"] = g.collective;

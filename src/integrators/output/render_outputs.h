@@ -38,6 +38,7 @@ std::string filesWritten(const RenderSettings& settings);
 struct Gathered {
   double renderSeconds = 0.0;
   uint64_t rays = 0, dropped = 0;
+  uint64_t subpathVertices = 0;  // bidirectional integrators' (0: none counted)
   std::vector<double> droppedPerRank;  // NaN/Inf samples each rank dropped
   std::vector<double> collective;
   std::vector<std::string> hosts;    // each rank's processor name

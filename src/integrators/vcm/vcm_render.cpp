@@ -100,12 +100,14 @@ void renderVcm(RenderContext& c) {
   loop.run();
   const Image image = loop.image();
   const uint64_t lightVertices = job.allreduceSum(vcm.lightVertices());
+  const uint64_t merges = job.allreduceSum(vcm.merges());
   const Gathered g = gatherAfterRender(job, loop.start, c.renderer, film, false);
   if (!job.isRoot()) return;
   nlohmann::json j = commonStats(settings, job, g, image);
   const uint64_t now = loop.done - resumedAt;
   j["iterations"] = loop.done;
   j["light_vertices"] = lightVertices;
+  j["merges"] = merges;
   j["radius_first"] = vcm.firstRadius();
   j["radius_last"] = vcmRadius(vcm.firstRadius(), own.alpha, loop.done > 0 ? loop.done - 1 : 0);
   j["iterations_per_second"] = double(now) / std::max(g.renderSeconds, 1e-9);
