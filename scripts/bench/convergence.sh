@@ -43,27 +43,12 @@ for config in "${CONFIGS[@]}"; do
   echo "$name,$rmse,$rel,$run.png" >> "$finals"
 done
 plot_curves "$csv" "$IMG/convergence-$SCENE.png" "$SCENE, ${BUDGET} s on 2 ranks"
-/usr/bin/python3 - "$finals" "${REF%.exr}.png" "$IMG/crops-$SCENE.png" "$IMG/convergence-$SCENE.md" \
-  "$SCENE" "$BUDGET" "${CROP:-}" "$(git -C "$ROOT" rev-parse --short HEAD)" <<'PY'
+/usr/bin/python3 "$ROOT/scripts/bench/crops.py" "$finals" "${REF%.exr}.png" "$IMG/crops-$SCENE.png" \
+  "$SCENE: %s, $BUDGET s on 2 ranks" "${CROP:-}"
+/usr/bin/python3 - "$finals" "$IMG/convergence-$SCENE.md" "$SCENE" "$BUDGET" "$(git -C "$ROOT" rev-parse --short HEAD)" <<'PY'
 import csv, sys, datetime
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.image as mpimg
-import matplotlib.pyplot as plt
-finals, ref_png, crops_png, table, scene, budget, crop, commit = sys.argv[1:9]
+finals, table, scene, budget, commit = sys.argv[1:6]
 rows = list(csv.DictReader(open(finals)))
-ref = mpimg.imread(ref_png)
-h, w = ref.shape[:2]
-x, y, cw, ch = map(int, crop.split()) if crop else (w // 3, h // 3, w // 3, h // 3)
-panels = [("reference", ref)] + [(r["configuration"], mpimg.imread(r["png"])) for r in rows]
-fig, axes = plt.subplots(1, len(panels), figsize=(2.2 * len(panels), 2.5))
-for ax, (name, img) in zip(axes, panels):
-    ax.imshow(img[y:y + ch, x:x + cw], interpolation="nearest")
-    ax.set_title(name, fontsize=9)
-    ax.axis("off")
-fig.suptitle("%s: crop (%d, %d) %dx%d, %s s on 2 ranks" % (scene, x, y, cw, ch, budget), fontsize=10)
-fig.tight_layout()
-fig.savefig(crops_png, dpi=110)
 base = next((float(r["rmse"]) for r in rows if r["configuration"] == "pssmlt"), None)
 with open(table, "w") as f:
     f.write("%s, %s s on 2 ranks (seed 1) against scenes/references/%s.exr; %s, commit %s\n\n"

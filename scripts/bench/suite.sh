@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# The equal-time table over the whole suite: each configuration renders each scene for SHORT and
+# LONG seconds on 2 ranks with every seed of SEEDS, compared with scenes/references/SCENE.exr.
+# Results are appended to docs/img/suite.csv as they come (one row a render, with its commit), so
+# the table is built over several sittings: a group (scene, seed, length: every configuration) found
+# complete there is skipped, an incomplete one is rendered again whole. The first seed's LONG group
+# also writes RMSE-over-time curves (docs/img/suite-curves-SCENE.{csv,png}, snapshots every LONG/20 s)
+# and crops of its final images next to the reference (docs/img/suite-crops-SCENE.png). Then
+# docs/img/suite.md is made from the CSV (scripts/bench/suite_table.py).
+# Usage: scripts/bench/suite.sh [SCENE...]   (default every scene with a reference)
+#   env: CONFIGS (default "bdpt pssmlt relt vcm"), SEEDS ("1 2"), SHORT (30), LONG (120)
+set -euo pipefail
+source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
+source "$ROOT/scripts/bench/snapshots.sh"
+read -r -a CONFIGS <<< "${CONFIGS:-bdpt pssmlt relt vcm}"
+read -r -a SEED_LIST <<< "${SEEDS:-1 2}"
+SHORT="${SHORT:-30}" LONG="${LONG:-120}"
+SCENES=("$@")
+((${#SCENES[@]})) || SCENES=(cornell-box glass-cube water-box ring torus-in-glass door-ajar mirror-balls glossy-caustics
+                             living-room)
+IMG="$ROOT/docs/img"
+OUT="$ROOT/out/bench/suite"
+CSV="$IMG/suite.csv"
+mkdir -p "$IMG" "$OUT"
+[ -f "$CSV" ] || echo "scene,configuration,seed,seconds,rmse,rel_mse,mean,reference_mean,commit,date" > "$CSV"
+COMMIT="$(git -C "$ROOT" rev-parse --short HEAD)"
+
+# done_in_csv SCENE CONFIG SEED SECONDS: that render has a row.
+done_in_csv() { grep -q "^$1,$2,$3,$4," "$CSV"; }
+
+# group SCENE SEED SECONDS: every configuration's render, unless all are in the CSV already.
+group() {
+  local scene="$1" seed="$2" secs="$3" ref="$ROOT/scenes/references/$1.exr" config all=1 curves=0
+  for config in "${CONFIGS[@]}"; do done_in_csv "$scene" "$config" "$seed" "$secs" || all=0; done
+  ((all)) && { echo "suite: $scene seed $seed ${secs} s: in $CSV already"; return; }
+  [ "$seed" = "${SEED_LIST[0]}" ] && [ "$secs" = "$LONG" ] && curves=1
+  local rows=() curve_csv="$OUT/$scene-curves.csv" finals="$OUT/$scene-finals.csv"
+  echo "configuration,seconds,rmse,rel_mse" > "$curve_csv"
+  echo "configuration,rmse,rel_mse,png" > "$finals"
+  for config in "${CONFIGS[@]}"; do
+    local run="$OUT/$scene-$config-s$seed-$secs" snap=0
+    ((curves)) && [ "$config" != erpt ] && snap=$((LONG / 20 > 1 ? LONG / 20 : 1))
+    SEED="$seed" render_followed "$run" "$scene" "$secs" "$snap" --integrator "$config"
+    if ((curves)); then curve "$run" "$ref" "$config" && cat "$run.csv" >> "$curve_csv"; fi
+    local c
+    c="$("$BUILD_DIR/relt" compare "$run.exr" "$ref" | /usr/bin/python3 -c \
+      "import json,sys; c=json.load(sys.stdin); print('%.6g,%.6g,%.6g,%.6g' % (c['rmse'], c['rel_mse'], c['mean'], c['reference_mean']))")"
+    rows+=("$scene,$config,$seed,$secs,$c,$COMMIT,$(date -u +%Y-%m-%d)")
+    echo "$config,${c%%,*},$(echo "$c" | cut -d, -f2),$run.png" >> "$finals"
+    echo "suite: $scene $config seed $seed ${secs} s: rmse ${c%%,*}"
+  done
+  # Only a whole group is recorded: its renders shared the machine's state of one sitting.
+  sed -i "/^$scene,[^,]*,$seed,$secs,/d" "$CSV"
+  printf '%s\n' "${rows[@]}" >> "$CSV"
+  if ((curves)); then
+    cp "$curve_csv" "$IMG/suite-curves-$scene.csv"
+    plot_curves "$curve_csv" "$IMG/suite-curves-$scene.png" "$scene, ${secs} s on 2 ranks (seed $seed)"
+    /usr/bin/python3 "$ROOT/scripts/bench/crops.py" "$finals" "$ROOT/scenes/references/$scene.png" \
+      "$IMG/suite-crops-$scene.png" "$scene: %s, ${secs} s on 2 ranks (seed $seed)" "${CROP:-}"
+  fi
+}
+
+for scene in "${SCENES[@]}"; do
+  [ -f "$ROOT/scenes/references/$scene.exr" ] || { echo "suite: no reference for $scene, skipped" >&2; continue; }
+  for seed in "${SEED_LIST[@]}"; do
+    group "$scene" "$seed" "$LONG"
+    group "$scene" "$seed" "$SHORT"
+  done
+done
+/usr/bin/python3 "$ROOT/scripts/bench/suite_table.py" "$CSV" "$IMG/suite.md"
