@@ -12,12 +12,12 @@
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
 source "$ROOT/scripts/bench/snapshots.sh"
+source "$ROOT/scripts/bench/common.sh"
 read -r -a CONFIGS <<< "${CONFIGS:-bdpt pssmlt relt vcm}"
 read -r -a SEED_LIST <<< "${SEEDS:-1 2}"
 SHORT="${SHORT:-30}" LONG="${LONG:-120}"
 SCENES=("$@")
-((${#SCENES[@]})) || SCENES=(cornell-box glass-cube water-box ring torus-in-glass door-ajar mirror-balls glossy-caustics
-                             living-room)
+((${#SCENES[@]})) || SCENES=("${SUITE_SCENES[@]}")
 IMG="$ROOT/docs/img"
 OUT="$ROOT/out/bench/suite"
 CSV="$IMG/suite.csv"

@@ -10,6 +10,7 @@
 #   the memory; with integrators named, only their speed; writes out/bench/threads.txt)
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
+source "$ROOT/scripts/bench/common.sh"
 PAIRS="${1:-5}"
 shift || true
 INTEGRATORS=("$@")
@@ -20,7 +21,6 @@ TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 mkdir -p "$OUT"
 
-median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 
 # A render on SETUP (ranks or threads) with the given options; its stats go to $TMP/stats.json.
 run() {

@@ -7,6 +7,7 @@
 # (writes out/bench/throughput.txt)
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
+source "$ROOT/scripts/bench/common.sh"
 SPP_PT="${1:-256}"
 SPP_BDPT="${2:-64}"
 REPEATS="${3:-3}"
@@ -14,7 +15,6 @@ MPP="${4:-32}"
 OUT="$ROOT/out/bench"
 mkdir -p "$OUT"
 
-median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 
 {
   echo "machine: $(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores; $(date -u +%Y-%m-%d); commit $(git -C "$ROOT" rev-parse --short HEAD)"

@@ -9,18 +9,17 @@
 #   writes out/bench/vertices.txt)
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
+source "$ROOT/scripts/bench/common.sh"
 SECS="${1:-5}"
 REPEATS="${2:-3}"
 shift 2 || shift $#
 SCENES=("$@")
-((${#SCENES[@]})) || SCENES=(cornell-box glass-cube water-box ring torus-in-glass door-ajar mirror-balls glossy-caustics
-                             living-room)
+((${#SCENES[@]})) || SCENES=("${SUITE_SCENES[@]}")
 OUT="$ROOT/out/bench"
 TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 mkdir -p "$OUT"
 
-median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 # rate SCENE INTEGRATOR: one render's subpath vertices per second per core, in millions.
 rate() {
   "${MPIRUN[@]}" -np 1 "$BUILD_DIR/relt" render "$ROOT/scenes/$1.gltf" --integrator "$2" --time "$SECS" --threads 1 \
