@@ -72,6 +72,7 @@ struct Options {
   std::string compareA, compareB, compareDiff, comparePng;
   std::vector<std::string> averageInputs;
   std::string averageOutput, averagePng;
+  std::vector<double> averageWeights;
   double stallTimeout = 120.0;
   CLI::Option* threads = nullptr;
   // The render options given on the command line, by long name.
@@ -170,13 +171,13 @@ int runCompare(const Options& o, bool root) {
   return 0;
 }
 
-// relt average: the pixel-by-pixel mean of the inputs.
+// relt average: the pixel-by-pixel mean of the inputs, weighted if asked.
 int runAverage(const Options& o, bool root) {
   checkNamedAs(o.averageOutput, "--output", relt::ImageFormat::Exr);
   checkNamedAs(o.averagePng, "--png", relt::ImageFormat::Png);
   std::vector<relt::Image> images;
   for (const std::string& path : o.averageInputs) images.push_back(relt::readExr(path));
-  const relt::Image mean = relt::averageImages(images, o.averageInputs);
+  const relt::Image mean = relt::averageImages(images, o.averageInputs, o.averageWeights);
   if (root) {
     relt::writeExr(o.averageOutput, mean);
     if (!o.averagePng.empty()) relt::writePng(o.averagePng, mean, 0.0f);
@@ -230,6 +231,9 @@ int main(int argc, char** argv) {
   average->add_option("images", o.averageInputs, "renders to average (OpenEXR, same size)")->required();
   average->add_option("-o,--output", o.averageOutput, "the mean (OpenEXR)")->required();
   average->add_option("--png", o.averagePng, "also write an sRGB PNG preview");
+  average->add_option("--weights", o.averageWeights,
+                      "one positive weight per image, e.g. its render time (default: equal)")
+      ->delimiter(',');
 
   if (const std::string word = unknownSubcommand(argc, argv, app); !word.empty()) {
     if (root) std::fprintf(stderr, "relt: error: unknown command '%s': expected render, info, compare or average (see relt --help)\n", word.c_str());

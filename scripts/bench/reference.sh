@@ -20,7 +20,13 @@
 #   (seed 98). vcm's merging is the most efficient estimator of their glossy and glass caustics but
 #   is biased at a finite radius; pairing it with an unbiased half keeps that bias visible in the
 #   halves' difference and halves it in the reference.
+# The halves are kept (scenes/references/halves/SCENE.a.exr, .b.exr), so a reference can be made
+# longer over several sittings: EXTEND=1 renders a new pair of halves of SECONDS in all (the next
+# seeds: 97 and 96, then 95 and 94, ...) and merges each into the stored half of its method, weighted
+# by rays traced (the work of one integrator, whatever else shared the machine); the JSON lists
+# every pair ("passes").
 # Usage: scripts/bench/reference.sh SCENE [SECONDS] [RANKS]   (defaults 1200 s in all, 2 ranks)
+#        EXTEND=1 scripts/bench/reference.sh SCENE SECONDS [RANKS]
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
 SCENE="${1:?usage: reference.sh SCENE [SECONDS] [RANKS]}"
@@ -32,17 +38,28 @@ case "$SCENE" in
   glossy-caustics | living-room) DEFAULT_METHOD=mixed ;;
   *) DEFAULT_METHOD=bdpt ;;
 esac
+DIR="$ROOT/scenes/references"
+HALVES="$DIR/halves"
+PASSES=0
+if [ "${EXTEND:-0}" = 1 ]; then
+  [ -f "$HALVES/$SCENE.a.exr" ] && [ -f "$HALVES/$SCENE.b.exr" ] && [ -f "$DIR/$SCENE.json" ] ||
+    { echo "reference.sh: EXTEND=1 needs the halves of a previous reference in $HALVES" >&2; exit 2; }
+  read -r PASSES STORED_METHOD < <(/usr/bin/python3 -c "import json,sys; d=json.load(open(sys.argv[1])); print(len(d['passes']), d['method'].split(':')[0])" "$DIR/$SCENE.json")
+  DEFAULT_METHOD="$STORED_METHOD"
+fi
 METHOD="${METHOD:-$DEFAULT_METHOD}"
+[ "${EXTEND:-0}" != 1 ] || [ "$METHOD" = "$STORED_METHOD" ] ||
+  { echo "reference.sh: the stored reference of $SCENE is $STORED_METHOD, not $METHOD" >&2; exit 2; }
 HALF="$(/usr/bin/python3 -c "print($SECONDS_BUDGET / 2)")"
-PSSMLT=(--integrator pssmlt --time "$HALF" --seed 99 --direct-emission-spp 4096)
+SEED_A=$((99 - 2 * PASSES)) SEED_B=$((98 - 2 * PASSES))
+PSSMLT=(--integrator pssmlt --time "$HALF" --seed "$SEED_A" --direct-emission-spp 4096)
 case "$METHOD" in
-  bdpt) A=(--integrator bdpt --time "$HALF" --seed 99) B=(--integrator bdpt --time "$HALF" --seed 98) ;;
-  chains) A=("${PSSMLT[@]}") B=(--integrator relt --time "$HALF" --seed 98 --direct-emission-spp 4096) ;;
-  mixed) A=("${PSSMLT[@]}") B=(--integrator vcm --time "$HALF" --seed 98) ;;
+  bdpt) A=(--integrator bdpt --time "$HALF" --seed "$SEED_A") B=(--integrator bdpt --time "$HALF" --seed "$SEED_B") ;;
+  chains) A=("${PSSMLT[@]}") B=(--integrator relt --time "$HALF" --seed "$SEED_B" --direct-emission-spp 4096) ;;
+  mixed) A=("${PSSMLT[@]}") B=(--integrator vcm --time "$HALF" --seed "$SEED_B") ;;
   *) echo "reference.sh: METHOD must be bdpt, chains or mixed, not $METHOD" >&2; exit 2 ;;
 esac
-DIR="$ROOT/scenes/references"
-mkdir -p "$DIR"
+mkdir -p "$DIR" "$HALVES"
 TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 COMMIT="$(git -C "$ROOT" rev-parse --short HEAD)"
@@ -58,25 +75,51 @@ render() {
 
 render a "${A[@]}"
 render b "${B[@]}"
-"$BUILD_DIR/relt" average "$TMP/a.exr" "$TMP/b.exr" -o "$TMP/$SCENE.exr" --png "$TMP/$SCENE.png"
-"$BUILD_DIR/relt" compare "$TMP/a.exr" "$TMP/b.exr" > "$TMP/halves.json"
-/usr/bin/python3 - "$TMP" "$DIR/$SCENE.json" "$RANKS" "$SCENE" "$COMMIT" "$MACHINE" "$METHOD" "${A[*]}" "${B[*]}" <<'PY'
+# merge HALF: the new render of that half, merged into the stored one by rays traced.
+merge() {
+  local half="$1" old_rays new_rays
+  if ((PASSES == 0)); then cp "$TMP/$half.exr" "$TMP/$half.merged.exr"; return; fi
+  read -r old_rays new_rays < <(/usr/bin/python3 -c "
 import json, sys
-tmp, out, ranks, scene, commit, machine, method, a, b = sys.argv[1:]
+old = sum(p['stats'][sys.argv[3]]['rays'] for p in json.load(open(sys.argv[1]))['passes'])
+print(old, json.load(open(sys.argv[2]))['rays'])" "$DIR/$SCENE.json" "$TMP/$half.json" "$half")
+  "$BUILD_DIR/relt" average "$HALVES/$SCENE.$half.exr" "$TMP/$half.exr" --weights "$old_rays,$new_rays" \
+    -o "$TMP/$half.merged.exr"
+}
+merge a
+merge b
+"$BUILD_DIR/relt" average "$TMP/a.merged.exr" "$TMP/b.merged.exr" -o "$TMP/$SCENE.exr" --png "$TMP/$SCENE.png"
+"$BUILD_DIR/relt" compare "$TMP/a.merged.exr" "$TMP/b.merged.exr" > "$TMP/halves.json"
+PREVIOUS="$DIR/$SCENE.json"
+((PASSES)) || PREVIOUS=""
+/usr/bin/python3 - "$TMP" "$TMP/$SCENE.json" "$RANKS" "$SCENE" "$COMMIT" "$MACHINE" "$METHOD" "${A[*]}" "${B[*]}" "$PREVIOUS" <<'PY'
+import datetime, json, sys
+tmp, out, ranks, scene, commit, machine, method, a, b, previous = sys.argv[1:]
 halves = json.load(open(tmp + "/halves.json"))
-stats = {"a": json.load(open(tmp + "/a.json")), "b": json.load(open(tmp + "/b.json"))}
 cmd = "mpirun -np %s relt render scenes/%s.gltf -o %%s.exr %%s" % (ranks, scene)
-json.dump({"method": method + ": the mean of two independent renders of half the time each",
-           "commands": [cmd % ("a", a), cmd % ("b", b),
-                        "relt average a.exr b.exr -o scenes/references/%s.exr" % scene],
+passes = json.load(open(previous))["passes"] if previous else []
+passes.append({"commands": [cmd % ("a", a), cmd % ("b", b)], "commit": commit, "machine": machine,
+               "date": datetime.date.today().isoformat(),
+               "stats": {"a": json.load(open(tmp + "/a.json")), "b": json.load(open(tmp + "/b.json"))}})
+for p in passes:  # per-chain details would make the file megabytes; the totals stay
+    for s in p["stats"].values():
+        for key in [k for k, v in s.items() if isinstance(v, list) and len(v) > 64]:
+            del s[key]
+seconds = sum(p["stats"][h]["render_seconds"] for p in passes for h in "ab")
+json.dump({"method": method + ": the mean of two independent halves, each the rays-weighted mean of its passes",
+           "merge": "each half: relt average of its passes --weights RAYS; reference: relt average a.exr b.exr",
+           "seconds": seconds,
            "halves": {"rmse": halves["rmse"], "rel_mse": halves["rel_mse"], "mean_a": halves["mean"],
                       "mean_b": halves["reference_mean"]},
-           "reference_rmse_estimate": halves["rmse"] / 2,
-           "commit": commit, "machine": machine, "stats": stats},
+           "reference_rmse_estimate": halves["rmse"] / 2, "passes": passes},
           open(out, "w"), indent=1)
-print("halves: RMSE %.5f (reference's own RMSE about %.5f), means %.5f / %.5f"
-      % (halves["rmse"], halves["rmse"] / 2, halves["mean"], halves["reference_mean"]))
+print("%s: %d passes, %.0f s; halves: RMSE %.5f (reference's own RMSE about %.5f), means %.5f / %.5f"
+      % (scene, len(passes), seconds, halves["rmse"], halves["rmse"] / 2, halves["mean"], halves["reference_mean"]))
 PY
+# The stored files change only now, together, once every render and merge has succeeded.
+mv "$TMP/a.merged.exr" "$HALVES/$SCENE.a.exr"
+mv "$TMP/b.merged.exr" "$HALVES/$SCENE.b.exr"
 mv "$TMP/$SCENE.exr" "$DIR/$SCENE.exr"
 mv "$TMP/$SCENE.png" "$DIR/$SCENE.png"
-echo "reference: $DIR/$SCENE.exr ($DIR/$SCENE.json)"
+mv "$TMP/$SCENE.json" "$DIR/$SCENE.json"
+echo "reference: $DIR/$SCENE.exr ($DIR/$SCENE.json, halves in $HALVES)"

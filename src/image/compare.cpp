@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "core/error.h"
 
@@ -32,10 +33,31 @@ Image signedDifference(const Image& a, const Image& b) {
   return d;
 }
 
-Image averageImages(const std::vector<Image>& images, const std::vector<std::string>& names) {
+namespace {
+
+// The weights normalised to sum to 1: equal when none are given.
+std::vector<double> normalisedWeights(size_t count, const std::vector<double>& weights) {
+  if (weights.empty()) return std::vector<double>(count, 1.0 / double(count));
+  if (weights.size() != count)
+    throw InputError("", "--weights", std::to_string(weights.size()) + " weights for " + std::to_string(count) + " images");
+  double total = 0.0;
+  for (double w : weights) {
+    if (!(w > 0.0) || !std::isfinite(w)) throw InputError("", "--weights", "a weight must be positive and finite");
+    total += w;
+  }
+  std::vector<double> normalised;
+  for (double w : weights) normalised.push_back(w / total);
+  return normalised;
+}
+
+}  // namespace
+
+Image averageImages(const std::vector<Image>& images, const std::vector<std::string>& names,
+                    const std::vector<double>& weights) {
   if (images.empty()) throw InputError("", "", "no images to average");
+  const std::vector<double> w = normalisedWeights(images.size(), weights);
   const Image& first = images.front();
-  Image mean(first.width, first.height);
+  std::vector<double> sum(first.rgb.size(), 0.0);
   for (size_t k = 0; k < images.size(); ++k) {
     const Image& im = images[k];
     if (im.width != first.width || im.height != first.height)
@@ -43,10 +65,10 @@ Image averageImages(const std::vector<Image>& images, const std::vector<std::str
                        "is " + std::to_string(im.width) + "x" + std::to_string(im.height) + " but " +
                            (names.empty() ? std::string("the first image") : names.front()) + " is " +
                            std::to_string(first.width) + "x" + std::to_string(first.height));
-    mean.add(im);
+    for (size_t i = 0; i < sum.size(); ++i) sum[i] += w[k] * double(im.rgb[i]);
   }
-  const float scale = 1.0f / float(images.size());
-  for (float& v : mean.rgb) v *= scale;
+  Image mean(first.width, first.height);
+  for (size_t i = 0; i < sum.size(); ++i) mean.rgb[i] = float(sum[i]);
   return mean;
 }
 

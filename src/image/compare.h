@@ -20,8 +20,11 @@ ImageComparison compareImages(const Image& a, const Image& b, const std::string&
 // a - b per pixel and channel.
 Image signedDifference(const Image& a, const Image& b);
 // The pixel-by-pixel mean of independent renders of one scene (`relt average`): their errors
-// average out like one render of their total time. Throws InputError naming an image whose size
-// differs from the first's.
-Image averageImages(const std::vector<Image>& images, const std::vector<std::string>& names);
+// average out like one render of their total time. With weights (one per image, positive; empty:
+// equal) the mean is weighted, e.g. by render time, so renders of unequal work combine as one
+// render of their total. Throws InputError naming an image whose size differs from the first's,
+// or when the weights do not fit the images.
+Image averageImages(const std::vector<Image>& images, const std::vector<std::string>& names,
+                    const std::vector<double>& weights = {});
 
 }  // namespace relt

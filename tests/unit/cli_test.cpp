@@ -151,7 +151,7 @@ TEST(Cli, CompareReportsZeroErrorForAnImageAgainstItselfAndWritesTheDifference) 
   EXPECT_TRUE(fileExists(dir + "/d.png"));
 }
 
-TEST(Cli, AverageWritesTheMeanOfRendersAndRejectsADifferentSize) {
+TEST(Cli, AverageWritesTheMeanOfRendersWeightedIfAskedAndRejectsADifferentSizeOrBadWeights) {
   const std::string dir = makeTempDir("average");
   const std::string render = reltBinary() + " render " + kScene + " --spp 1 --width 16 --height 16 -o " + dir;
   ASSERT_EQ(runCommand(render + "/a.exr --seed 1").exitCode, 0);
@@ -163,6 +163,16 @@ TEST(Cli, AverageWritesTheMeanOfRendersAndRejectsADifferentSize) {
   ASSERT_EQ(m.rgb.size(), a.rgb.size());
   for (size_t i = 0; i < m.rgb.size(); ++i) EXPECT_FLOAT_EQ(m.rgb[i], 0.5f * (a.rgb[i] + b.rgb[i])) << i;
   EXPECT_TRUE(fileExists(dir + "/m.png"));
+
+  r = runCommand(reltBinary() + " average " + dir + "/a.exr " + dir + "/b.exr --weights 3,1 -o " + dir + "/w.exr");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const relt::Image w = relt::readExr(dir + "/w.exr");
+  for (size_t i = 0; i < w.rgb.size(); ++i) EXPECT_FLOAT_EQ(w.rgb[i], 0.75f * a.rgb[i] + 0.25f * b.rgb[i]) << i;
+  r = runCommand(reltBinary() + " average " + dir + "/a.exr " + dir + "/b.exr --weights 1 -o " + dir + "/bad.exr");
+  EXPECT_EQ(r.exitCode, 2) << r.output;
+  EXPECT_EQ(lineCount(r.output), 1) << r.output;
+  EXPECT_NE(r.output.find("--weights"), std::string::npos) << r.output;
+  EXPECT_FALSE(fileExists(dir + "/bad.exr"));
 
   r = runCommand(reltBinary() + " average " + dir + "/a.exr " + dir + "/small.exr -o " + dir + "/bad.exr");
   EXPECT_EQ(r.exitCode, 2) << r.output;

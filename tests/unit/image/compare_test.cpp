@@ -43,6 +43,23 @@ TEST(AverageImages, MeanPixelByPixel) {
   EXPECT_EQ(averageImages({a}, {}).rgb, a.rgb);
 }
 
+TEST(AverageImages, WeightedMeanCombinesRendersOfUnequalTime) {
+  Image a(1, 1), b(1, 1);
+  a.rgb = {1, 4, 0};
+  b.rgb = {4, 1, 3};
+  // 2 s and 1 s: the mean of a 3 s render.
+  EXPECT_EQ(averageImages({a, b}, {}, {2.0, 1.0}).rgb, (std::vector<float>{2, 3, 1}));
+  EXPECT_EQ(averageImages({a, b}, {}, {5.0, 5.0}).rgb, averageImages({a, b}, {}).rgb);
+}
+
+TEST(AverageImages, WeightsThatDoNotFitTheImagesAreAnInputError) {
+  const Image a(1, 1), b(1, 1);
+  EXPECT_THROW(averageImages({a, b}, {}, {1.0}), InputError);
+  EXPECT_THROW(averageImages({a, b}, {}, {1.0, 0.0}), InputError);
+  EXPECT_THROW(averageImages({a, b}, {}, {1.0, -2.0}), InputError);
+  EXPECT_THROW(averageImages({a, b}, {}, {1.0, std::nan("")}), InputError);
+}
+
 TEST(AverageImages, ASizeDifferentFromTheFirstIsAnInputErrorNamingBoth) {
   try {
     averageImages({Image(2, 2), Image(2, 2), Image(2, 3)}, {"a.exr", "b.exr", "c.exr"});
