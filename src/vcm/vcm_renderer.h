@@ -15,7 +15,9 @@ namespace relt {
 
 struct VcmSettings {
   VcmMode mode = VcmMode::Vcm;
-  double radius = 2.0;   // the first iteration's merging radius, in pixel footprints (pixelFootprint)
+  // The first iteration's merging radius, in pixel footprints (pixelFootprint): the least error at
+  // 30 s over five scenes (docs/BENCHMARKS.md, "vcm's merging radius"), within 1.2x of each one's best.
+  double radius = 1.0;
   double alpha = 0.75;    // r_i = r_1 i^((alpha - 1) / 2): the radius shrinks, the bias vanishes
 };
 

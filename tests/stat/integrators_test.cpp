@@ -135,7 +135,7 @@ TEST(IntegratorAgreement, ErptAndBdptAgreeOnCornellBox) {
 }
 
 // vcm with connections only is bdpt's estimator (unbiased); with merging it is biased by its
-// radius, which at the default (two pixel footprints, shrinking) is below these tests' error on
+// radius, which at the default (one pixel footprint, shrinking) is below these tests' error on
 // cornell-box's diffuse walls.
 TEST(IntegratorAgreement, VcmConnectionsOnlyAndBdptAgreeOnCornellBox) {
   expectAgreementOnCornellBox("vcm", "bdpt", 16, 10,
@@ -150,12 +150,12 @@ TEST(IntegratorAgreement, VcmAndBdptAgreeOnCornellBox) {
 // so a tile's mean there has a standard error below 0.1 % of it, left out), tile by tile (64 x 64).
 // Merging blurs the light by about the radius; a tile's mean moves by that where light crosses its
 // border and where merges reach around the box's corners onto the next wall. The bound on that
-// bias: 1 % of the tile's mean, stated before the test first ran. At the default radius (two pixel
-// footprints) it failed in one tile, (64, 64), the ceiling's and back wall's corners with the left
-// wall: +1.7 % (0.12231 +- 0.00017 against 0.12028, the 15 other tiles within the bound; with
-// connections only every tile was within 4 standard errors). So the tested radius is half a
-// footprint, where the bias, as r^2, is 16 times smaller; the default's corner bias is recorded
-// in docs/BENCHMARKS.md. Each tile within the bound plus 4 standard errors of vcm's mean (10 seeds).
+// bias: 1 % of the tile's mean, stated before the test first ran. At two pixel footprints (the
+// default then; one since) it failed in one tile, (64, 64), the ceiling's and back wall's corners
+// with the left wall: +1.7 % (0.12231 +- 0.00017 against 0.12028, the 15 other tiles within the
+// bound; with connections only every tile was within 4 standard errors). So the tested radius is
+// half a footprint, where the bias, as r^2, is 16 times smaller than at two (4 times smaller than at
+// the default). Each tile within the bound plus 4 standard errors of vcm's mean (10 seeds).
 TEST(IntegratorAgreement, VcmMatchesTheCornellBoxReferenceWithinItsBiasBound) {
   const Image reference = readExr(sourcePath("scenes/references/cornell-box.exr"));
   const Scene scene = loadGltf(sourcePath("scenes/cornell-box.gltf"));
