@@ -697,6 +697,20 @@ def torus_in_glass():
 
 
 @scene
+def glass_case():
+    """torus-in-glass's room and empty case under a large light: pt and bdpt both converge fast, so
+    their agreement through glass resting 1 mm above a floor is a short test."""
+    g = GltfScene("glass-case")
+    cornell_room(g, half=1.5, height=2.2)
+    outer = (0.55, 0.38, 0.45)
+    g.add_mesh("glass_case", hollow_box((0.0, 0.001 + outer[1], -0.2), outer, 0.05), dielectric("glass", 1.5),
+               closed="outward")
+    ceiling_light(g, "ceiling_light", emitter("large_light", (4.0, 4.0, 4.0)), 0.25, -0.1, 1.2, 1.2, 2.2)
+    g.camera("camera", (0.0, 1.5, 3.0), (0.0, 0.4, -0.2), 0.6)
+    return g, settings(12, (512, 512))
+
+
+@scene
 def door_ajar():
     """Two rooms joined by a doorway; the door is open by 8 degrees; the only light is in the far room."""
     g = GltfScene("door-ajar")
@@ -929,6 +943,18 @@ DESCRIPTIONS = {
                "lights the torus is an implicit caustic path, seen through the glass again (two refractions "
                "on each side). Next-event estimation gets nothing on the torus.",
         "materials": "walls Lambert; glass: transmission 1, ior 1.5, roughness 0; torus (0.8, 0.55, 0.2).",
+    },
+    "glass-case": {
+        "figure": "test scene (glass on a floor)",
+        "source": "torus-in-glass without its torus, under a large light.",
+        "what": "torus-in-glass's room (white walls) and its empty thick-walled glass case (outer 1.1 x 0.76 x "
+                "0.9, walls 5 cm, ior 1.5), resting 1 mm above the floor, under a 1.2 x 1.2 ceiling light of "
+                "radiance 4.",
+        "why": "Light through glass onto the floor a millimetre below it and back out: pt and bdpt both render it "
+               "in seconds, and must agree there (tests/stat/integrators_test.cpp). A subpath that took its "
+               "directions between stored vertex positions, instead of along its traced rays, was 1.4 % dark "
+               "here, because the ray origins' offset tilts them beside a 1 mm gap.",
+        "materials": "walls Lambert (0.73); glass: transmission 1, ior 1.5, roughness 0; light radiance 4.",
     },
     "door-ajar": {
         "figure": "Veach-style door ajar",
