@@ -57,9 +57,11 @@ bool anyDelta(std::span<const PathVertex> vertices) {
 
 }  // namespace
 
-// Densities are evaluated along the directions between stored vertex positions, not along the
-// sampled ray directions (which start from an offset origin): the MIS weights are then a function
-// of the path's vertices alone and sum to exactly 1 over the strategies that can make it.
+// MIS densities are evaluated along the directions between stored vertex positions (toPrev), not
+// along the traced rays (which start from an offset origin): the weights are then a function of the
+// path's vertices alone and sum to exactly 1 over the strategies that can make it. The BSDF is
+// sampled and evaluated with the traced direction (wo): at a smooth dielectric the Fresnel branch
+// follows it, and a direction tilted by the offset biased glass on a floor by 1 %.
 void Bdpt::randomWalk(Ray ray, Color beta, TransportMode mode, size_t maxVertices, SampleSource& source,
                       SampleStream stream, std::vector<PathVertex>& path) const {
   while (path.size() < maxVertices) {
@@ -71,12 +73,13 @@ void Bdpt::randomWalk(Ray ray, Color beta, TransportMode mode, size_t maxVertice
       PathVertex v;
       v.type = PathVertex::Type::Surface;
       v.sp = hit;
-      v.wo = glm::normalize(prev.sp.p - hit.p);
+      v.wo = -ray.dir;
+      v.toPrev = glm::normalize(prev.sp.p - hit.p);
       v.beta = beta;
-      v.pdfFwd = pdfGenerate(ctx_, prev, prev.wo, v, roulette_);
+      v.pdfFwd = pdfGenerate(ctx_, prev, prev.toPrev, v, roulette_);
       if (path.size() >= 2) {
         PathVertex& prevPrev = path[path.size() - 2];
-        prevPrev.pdfRev = pdfGenerate(ctx_, prev, -v.wo, prevPrev, roulette_);
+        prevPrev.pdfRev = pdfGenerate(ctx_, prev, -v.toPrev, prevPrev, roulette_);
       }
       v.bsdf.emplace(ctx_.scene.materials[hit.material], hit.ns, hit.ng);
       v.delta = v.bsdf->isDelta();
@@ -345,9 +348,9 @@ float Bdpt::misWeight(std::span<PathVertex> light, std::span<PathVertex> camera,
   // Densities that change because the subpaths are now joined (the four vertices at the seam).
   if (ls) {
     const Vec3 toLs = glm::normalize(ls->sp.p - ct.sp.p);
-    fromCamera[s - 1] = pdfGenerate(ctx_, ct, ct.wo, *ls, roulette_, cameraEnd);
+    fromCamera[s - 1] = pdfGenerate(ctx_, ct, ct.toPrev, *ls, roulette_, cameraEnd);
     if (lsPrev) fromCamera[s - 2] = pdfGenerate(ctx_, *ls, -toLs, *lsPrev, roulette_, lightEnd);
-    fromLight[s] = pdfGenerate(ctx_, *ls, ls->wo, ct, roulette_, lightEnd);
+    fromLight[s] = pdfGenerate(ctx_, *ls, ls->toPrev, ct, roulette_, lightEnd);
     if (ctPrev) fromLight[s + 1] = pdfGenerate(ctx_, ct, toLs, *ctPrev, roulette_, cameraEnd);
   } else {
     // s = 0: the camera subpath ended on an emitter; the light end would have chosen it by power.

@@ -13,7 +13,12 @@ struct PathVertex {
   // Surface: the BSDF is a Dirac delta. Light: the position is (punctual light). Camera: false.
   bool delta = false;
   SurfacePoint sp;
-  Vec3 wo{0.0f};  // unit direction towards the previous vertex of its own subpath (surfaces)
+  // Surfaces: unit directions towards the previous vertex of its own subpath. wo is the traced
+  // ray's (reversed), with which the BSDF is sampled and evaluated, as the path tracer does; toPrev
+  // joins the stored positions, with which the MIS densities are evaluated. They differ by the ray
+  // origin's offset, which is not small beside gaps of a millimetre (docs/ARCHITECTURE.md).
+  Vec3 wo{0.0f};
+  Vec3 toPrev{0.0f};
   Color beta{1.0f};  // subpath throughput up to this vertex (Veach's alpha)
   // Area densities of generating this vertex from its own subpath (fwd) and from the other end
   // (rev). Zero where the generating step was a delta scattering; the MIS walk treats 0 as 1.

@@ -18,9 +18,8 @@ void VcmTracer::traceCameraPath(const Vec2& film, SampleSource& u, std::span<con
   const int maxDepth = ctx_.settings.maxDepth;
   while (true) {
     SurfacePoint hit;
-    const Vec3 from = s.last;
     if (!advance(s, hit)) return;
-    const Vec3 wo = glm::normalize(from - hit.p);
+    const Vec3 wo = -s.dir;  // the traced ray's, as bdpt samples with (path/vertex.h)
     const Color le = ctx_.lights.emitted(hit, wo);
     if (!isBlack(le))
       out.add(film, s.beta * le * mis_.emissionWeight(s, hit, wo), s.specular ? PathClass::L0 : PathClass::L1);

@@ -44,7 +44,7 @@ struct VcmSubpath {
 // A stored vertex of a light subpath (non-specular surfaces only).
 struct LightVertex {
   SurfacePoint sp;
-  Vec3 wo{0.0f};     // towards the previous vertex of its subpath
+  Vec3 wo{0.0f};     // towards the previous vertex of its subpath, along the traced ray
   Color beta{0.0f};  // throughput from the light to here
   float dVCM = 0.0f, dVC = 0.0f, dVM = 0.0f;
   int length = 0;  // segments from the light

@@ -59,9 +59,8 @@ void VcmTracer::traceLightPath(SampleSource& u, std::vector<LightVertex>& store,
   // A vertex serves a technique up to maxDepth - 1 segments from the light (merging, light tracing).
   while (s.length < maxDepth - 1) {
     SurfacePoint hit;
-    const Vec3 from = s.last;
     if (!advance(s, hit)) return;
-    const Vec3 wo = glm::normalize(from - hit.p);
+    const Vec3 wo = -s.dir;  // the traced ray's, as bdpt samples with (path/vertex.h)
     const Bsdf bsdf(ctx_.scene.materials[hit.material], hit.ns, hit.ng);
     if (!bsdf.isDelta()) {
       store.push_back(LightVertex{hit, wo, s.beta, s.dVCM, s.dVC, s.dVM, s.length});
