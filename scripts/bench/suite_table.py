@@ -3,12 +3,38 @@
 
 Per scene and length: each configuration's RMSE against the reference as the root of its mean
 squared error over the seeds (each seed's in brackets), and vcm's efficiency (MSE x time at equal
-time) over bdpt and over the better of pssmlt and relt, from those mean squared errors.
+time) over bdpt and over the better of pssmlt and relt, from those mean squared errors. Where the
+reference's JSON states its own error (reference_rmse_estimate), the efficiencies are also given with
+that error's square taken out of every MSE (a reference's noise adds to every render's MSE alike and
+so pulls every ratio towards 1).
 Usage: suite_table.py SUITE_CSV OUT_MD
 """
 import csv
+import json
+import os
 import sys
 from collections import defaultdict
+
+
+def reference_mse(csv_path, scene):
+    """The square of the reference's own RMSE estimate, or None where its JSON states none."""
+    path = os.path.join(os.path.dirname(csv_path), "..", "..", "scenes", "references", scene + ".json")
+    try:
+        estimate = json.load(open(path)).get("reference_rmse_estimate")
+    except OSError:
+        return None
+    return estimate * estimate if estimate else None
+
+
+def efficiencies(mse, ref_mse):
+    """vcm over bdpt and over the better of pssmlt, relt; ref_mse is taken out of each MSE first."""
+    vcm = mse.get("vcm")
+    if not vcm or vcm <= ref_mse:
+        return ["-", "-"]
+    own = {c: m - ref_mse for c, m in mse.items()}
+    bdpt = "%.2f" % (own["bdpt"] / own["vcm"]) if "bdpt" in own else "-"
+    chains = [own[c] for c in ("pssmlt", "relt") if c in own]
+    return [bdpt, "%.2f" % (min(chains) / own["vcm"]) if chains else "-"]
 
 
 def mean_square(values):
@@ -25,7 +51,8 @@ def main(csv_path, out_path):
         configs[r["configuration"]] = True
         commits.add(r["commit"])
     configs = list(configs)
-    head = ["scene", "seconds"] + configs + ["vcm over bdpt", "vcm over best of pssmlt, relt"]
+    head = ["scene", "seconds"] + configs + ["vcm over bdpt", "vcm over best of pssmlt, relt",
+                                             "reference's RMSE", "the same, its MSE taken out"]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for scene in scenes:
         for secs in sorted(scenes[scene]):
@@ -37,10 +64,12 @@ def main(csv_path, out_path):
                     continue
                 mse[c] = mean_square(v)
                 cells.append("%.4g (%s)" % (mse[c] ** 0.5, ", ".join("%.4g" % x for x in v)))
-            vcm = mse.get("vcm")
-            cells.append("%.2f" % (mse["bdpt"] / vcm) if vcm and "bdpt" in mse else "-")
-            chains = [mse[c] for c in ("pssmlt", "relt") if c in mse]
-            cells.append("%.2f" % (min(chains) / vcm) if vcm and chains else "-")
+            cells += efficiencies(mse, 0.0)
+            ref_mse = reference_mse(csv_path, scene)
+            if ref_mse is None:
+                cells += ["not stated", "-"]
+            else:
+                cells += ["%.4g" % ref_mse ** 0.5, " / ".join(efficiencies(mse, ref_mse))]
             lines.append("| " + " | ".join(cells) + " |")
     with open(out_path, "w") as f:
         f.write("Equal time on 2 ranks against scenes/references (RMSE: root of the mean squared error over "
