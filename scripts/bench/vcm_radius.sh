@@ -4,7 +4,7 @@
 # scenes/references/SCENE.exr. A small radius has less bias (the blur of a merge) and more variance
 # (fewer light vertices per merge); the default should be the radius of least error at the times
 # users render for. Rows go to docs/img/vcm-radius.csv, the table (RMSE averaged over the seeds, by
-# MSE) to standard output.
+# MSE) to standard output; a render made again replaces its row.
 # Usage: scripts/bench/vcm_radius.sh [SCENE...]   env: RADII ("0.5 1 2 4"), SEEDS ("1 2"), SECONDS_BUDGET (30)
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
@@ -26,6 +26,8 @@ for scene in "${SCENES[@]}"; do
         --seed "$seed" --integrator vcm --vcm-radius "$radius" 2>/dev/null
       c="$("$BUILD_DIR/relt" compare "$run.exr" "$ROOT/scenes/references/$scene.exr" | /usr/bin/python3 -c \
         "import json,sys; c=json.load(sys.stdin); print('%.6g,%.6g,%.6g,%.6g' % (c['rmse'], c['rel_mse'], c['mean'], c['reference_mean']))")"
+      # A render again replaces its old row, so the table is over the latest reference and code.
+      sed -i "/^$scene,$radius,$seed,$BUDGET,/d" "$CSV"
       echo "$scene,$radius,$seed,$BUDGET,$c,$COMMIT" | tee -a "$CSV"
     done
   done
