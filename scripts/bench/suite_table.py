@@ -15,10 +15,12 @@ import os
 import sys
 from collections import defaultdict
 
+REFERENCES = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenes", "references")
 
-def reference_mse(csv_path, scene):
+
+def reference_mse(scene):
     """The square of the reference's own RMSE estimate, or None where its JSON states none."""
-    path = os.path.join(os.path.dirname(csv_path), "..", "..", "scenes", "references", scene + ".json")
+    path = os.path.join(REFERENCES, scene + ".json")
     try:
         estimate = json.load(open(path)).get("reference_rmse_estimate")
     except OSError:
@@ -55,6 +57,7 @@ def main(csv_path, out_path):
                                              "reference's RMSE", "the same, its MSE taken out"]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for scene in scenes:
+        ref_mse = reference_mse(scene)
         for secs in sorted(scenes[scene]):
             cells, mse = [scene, str(secs)], {}
             for c in configs:
@@ -65,7 +68,6 @@ def main(csv_path, out_path):
                 mse[c] = mean_square(v)
                 cells.append("%.4g (%s)" % (mse[c] ** 0.5, ", ".join("%.4g" % x for x in v)))
             cells += efficiencies(mse, 0.0)
-            ref_mse = reference_mse(csv_path, scene)
             if ref_mse is None:
                 cells += ["not stated", "-"]
             else:
