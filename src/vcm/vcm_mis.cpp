@@ -23,7 +23,8 @@ const char* vcmModeName(VcmMode mode) {
   }
 }
 
-VcmMis::VcmMis(const PathContext& ctx, const VcmIteration& iteration) : ctx_(ctx), mode_(iteration.mode) {
+VcmMis::VcmMis(const PathContext& ctx, const VcmIteration& iteration)
+    : ctx_(ctx), mode_(iteration.mode), kappa_(mis(float(iteration.lightSubpathFactor))) {
   const double eta = std::numbers::pi * double(iteration.radius) * iteration.radius * iteration.lightPaths;
   if (merges() && eta > 0.0) {
     vmWeight_ = connects() ? mis(float(eta)) : 0.0f;
@@ -34,8 +35,10 @@ VcmMis::VcmMis(const PathContext& ctx, const VcmIteration& iteration) : ctx_(ctx
 
 void VcmMis::startLight(VcmSubpath& s, const LightPoint& lp, float pdfDir, float cosLight) const {
   const float pdfStart = lp.pdfPick * lp.pdfPos, pdfEmit = pdfStart * pdfDir;
-  s.dVCM = mis(pdfStart / pdfEmit);
-  s.dVC = lp.delta ? 0.0f : mis(cosLight / pdfEmit);  // a point light's position cannot be hit
+  // dVCM and dVC start the terms of next-event estimation and of emission found (s = 1, 0): the
+  // only techniques without the light subpath factor, so only they are divided by it.
+  s.dVCM = mis(pdfStart / pdfEmit) / kappa_;
+  s.dVC = lp.delta ? 0.0f : mis(cosLight / pdfEmit) / kappa_;  // a point light's position cannot be hit
   s.dVM = s.dVC * vcWeight_;
   s.last = lp.sp.p;
   s.length = 0;
@@ -85,18 +88,18 @@ bool VcmMis::scatter(VcmSubpath& s, const Bsdf& bsdf, const SurfacePoint& sp, co
 
 // Seen straight from the pinhole, only this technique makes the path; with merging only, every path
 // through a non-specular camera vertex is merged there instead.
-float VcmMis::emissionWeight(const VcmSubpath& s, const SurfacePoint& hit, const Vec3& wo) const {
-  if (s.length == 1) return 1.0f;
-  if (mode_ == VcmMode::Ppm) return s.specular ? 1.0f : 0.0f;
+CameraTechniqueWeight VcmMis::emissionWeightParts(const VcmSubpath& s, const SurfacePoint& hit, const Vec3& wo) const {
+  if (s.length == 1) return {};
+  if (mode_ == VcmMode::Ppm) return {0.0f, 0.0f, s.specular};
   const uint32_t light = ctx_.lights.lightOfTriangle(hit.triangle);
-  if (light == std::numeric_limits<uint32_t>::max()) return 0.0f;
+  if (light == std::numeric_limits<uint32_t>::max()) return {0.0f, 0.0f, false};
   const float pdfStart = ctx_.lights.pdfPick(light) * ctx_.lights.pdfPosition(light);
   const float pdfEmit = pdfStart * ctx_.lights.pdfDirection(light, hit, wo);
-  return 1.0f / (1.0f + mis(pdfStart) * s.dVCM + mis(pdfEmit) * s.dVC);
+  return {mis(pdfStart) * s.dVCM, mis(pdfEmit) * s.dVC};
 }
 
-float VcmMis::nextEventWeight(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf,
-                              const LightPoint& lp) const {
+CameraTechniqueWeight VcmMis::nextEventWeightParts(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo,
+                                                   const Bsdf& bsdf, const LightPoint& lp) const {
   const Vec3 d = lp.sp.p - x.p;
   const float dist2 = glm::dot(d, d);
   const Vec3 w = d / std::sqrt(dist2);
@@ -105,9 +108,7 @@ float VcmMis::nextEventWeight(const VcmSubpath& s, const SurfacePoint& x, const 
   const float pdfLightW = lp.pdfPick * lp.pdfPos * dist2 / cosAtLight;  // the light point's, seen from x
   const float pdfHitW = lp.delta ? 0.0f : bsdf.pdf(wo, w) * q;          // the camera subpath hitting it
   const float pdfEmitA = ctx_.lights.pdfDirection(lp.light, lp.sp, -w) * std::abs(glm::dot(x.ng, w)) / dist2;
-  const float wLight = mis(pdfHitW / pdfLightW);
-  const float wCamera = mis(pdfEmitA) * (vmWeight_ + s.dVCM + s.dVC * mis(bsdf.pdf(w, wo) * q));
-  return 1.0f / (wLight + 1.0f + wCamera);
+  return {mis(pdfHitW / pdfLightW), mis(pdfEmitA) * (vmWeight_ + s.dVCM + s.dVC * mis(bsdf.pdf(w, wo) * q))};
 }
 
 float VcmMis::connectWeight(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf,

@@ -30,6 +30,11 @@ struct VcmIteration {
   VcmMode mode = VcmMode::Vcm;
   float radius = 0.0f;      // merging radius r
   double lightPaths = 1.0;  // N_L, the light subpaths traced in the iteration
+  // kappa: a factor on the densities of the techniques that use a light subpath (light tracing,
+  // connections with s >= 2, merging) against next-event estimation and emission found (s = 0, 1).
+  // 1 is plain VCM; meb's visibility chain draws light subpaths with density p / b_vis, so it
+  // weighs them by 1 / b_vis (thesis digest §5.4). Any constant keeps the weights a partition of 1.
+  double lightSubpathFactor = 1.0;
 };
 
 // The MIS state of a subpath while it is traced.
@@ -48,6 +53,16 @@ struct LightVertex {
   Color beta{0.0f};  // throughput from the light to here
   float dVCM = 0.0f, dVC = 0.0f, dVM = 0.0f;
   int length = 0;  // segments from the light
+};
+
+// The weight of next-event estimation or emission found (the techniques without a light subpath)
+// as 1 / (1 + other + kappa * light): `other`, the other one's term; `light`, the terms of every
+// technique with a light subpath, which the light subpath factor kappa multiplies. Kept apart for
+// meb, which learns kappa only after its camera subpaths are traced.
+struct CameraTechniqueWeight {
+  float other = 0.0f, light = 0.0f;
+  bool possible = true;  // false: the technique cannot make this path (weight 0)
+  float weight(float kappa) const { return possible ? 1.0f / (1.0f + other + kappa * light) : 0.0f; }
 };
 
 class VcmMis {
@@ -72,9 +87,18 @@ class VcmMis {
   // Weights: the camera subpath found emission at hit (leaving towards wo); next-event estimation
   // from camera vertex x to light point lp; camera vertex x joined to light vertex y; light vertex
   // y seen by the camera; camera vertex at y's position merged with y.
-  float emissionWeight(const VcmSubpath& s, const SurfacePoint& hit, const Vec3& wo) const;
+  float emissionWeight(const VcmSubpath& s, const SurfacePoint& hit, const Vec3& wo) const {
+    return emissionWeightParts(s, hit, wo).weight(kappa_);
+  }
   float nextEventWeight(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf,
-                        const LightPoint& lp) const;
+                        const LightPoint& lp) const {
+    return nextEventWeightParts(s, x, wo, bsdf, lp).weight(kappa_);
+  }
+  CameraTechniqueWeight emissionWeightParts(const VcmSubpath& s, const SurfacePoint& hit, const Vec3& wo) const;
+  CameraTechniqueWeight nextEventWeightParts(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo,
+                                             const Bsdf& bsdf, const LightPoint& lp) const;
+  // Mis(kappa): what CameraTechniqueWeight::weight takes.
+  float lightSubpathTerm() const { return kappa_; }
   float connectWeight(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf,
                       const LightVertex& y, const Bsdf& atY) const;
   float lightTracingWeight(const LightVertex& y, const Bsdf& atY) const;
@@ -86,6 +110,7 @@ class VcmMis {
   const PathContext& ctx_;
   VcmMode mode_;
   float vmWeight_ = 0.0f, vcWeight_ = 0.0f;  // Mis(eta) and Mis(1 / eta), eta = pi r^2 N_L
+  float kappa_ = 1.0f;                       // Mis(lightSubpathFactor)
   double mergeNormalisation_ = 0.0;
 };
 

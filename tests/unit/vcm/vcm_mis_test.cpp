@@ -56,19 +56,20 @@ class Techniques {
  public:
   Techniques(const PathContext& ctx, const VcmIteration& it, const Path& x)
       : ctx_(ctx), mis_(ctx, it), x_(x), n_(int(x.size())),
-        eta_(std::numbers::pi * double(it.radius) * it.radius * it.lightPaths), mode_(it.mode) {}
+        eta_(std::numbers::pi * double(it.radius) * it.radius * it.lightPaths), kappa_(it.lightSubpathFactor),
+        mode_(it.mode) {}
 
   // Every valid technique's weight, recursive and brute force, as (recursive, brute) pairs.
   std::vector<std::pair<double, double>> weights() const {
     std::vector<double> density, recursive;
     for (int s = 0; s <= n_; ++s)
       if (connectionValid(s)) {
-        density.push_back(connectionDensity(s));
+        density.push_back(connectionDensity(s) * (s >= 2 ? kappa_ : 1.0));
         recursive.push_back(connectionWeight(s));
       }
     for (int k = 1; k < n_; ++k)
       if (mode_ == VcmMode::Vcm && !x_[size_t(k)].delta()) {
-        density.push_back(connectionDensity(k + 1) * cameraDensity(k) * eta_);
+        density.push_back(connectionDensity(k + 1) * cameraDensity(k) * eta_ * kappa_);
         const VcmSubpath camera = cameraState(k);
         recursive.push_back(mis_.mergeWeight(camera, towardsCamera(k), *x_[size_t(k)].bsdf, lightVertex(k)));
       }
@@ -161,10 +162,11 @@ class Techniques {
   const Path& x_;
   int n_;
   double eta_;
+  double kappa_;  // the light subpath techniques' density factor (s >= 2, light tracing, merging)
   VcmMode mode_;
 };
 
-void checkScene(const std::string& name, VcmMode mode, MisHeuristic heuristic) {
+void checkScene(const std::string& name, VcmMode mode, MisHeuristic heuristic, double lightSubpathFactor = 1.0) {
   RenderSettings settings;
   settings.width = settings.height = 32;
   settings.heuristic = heuristic;
@@ -174,6 +176,7 @@ void checkScene(const std::string& name, VcmMode mode, MisHeuristic heuristic) {
   it.mode = mode;
   it.radius = 0.01f * glm::length(ctx.scene.bounds.diagonal());
   it.lightPaths = 32.0 * 32.0;
+  it.lightSubpathFactor = lightSubpathFactor;
   int checked = 0, withDelta = 0, lengths[9] = {};
   for (const Path& path : emitterPaths(ctx, 60000, 8)) {
     bool delta = false;
@@ -208,3 +211,11 @@ TEST(VcmMis, EveryTechniquesWeightIsTheBruteForceOneOnGlassCube) {
   checkScene("glass-cube", VcmMode::Vcm, MisHeuristic::Power);
 }
 TEST(VcmMis, ConnectionsOnlyWeightsAreBdptsOnGlassCube) { checkScene("glass-cube", VcmMode::Bpt, MisHeuristic::Power); }
+// meb's visibility chain weighs its light subpath techniques by 1 / b_vis: with that factor on
+// their densities the recursion still gives every technique its brute-force weight.
+TEST(VcmMis, ALightSubpathFactorWeighsThoseTechniquesAsTheirDensitiesTimesIt) {
+  checkScene("cornell-box", VcmMode::Vcm, MisHeuristic::Power, 3.7);
+  checkScene("cornell-box", VcmMode::Vcm, MisHeuristic::Balance, 0.4);
+  checkScene("glass-cube", VcmMode::Vcm, MisHeuristic::Power, 3.7);
+  checkScene("glass-cube", VcmMode::Bpt, MisHeuristic::Balance, 3.7);
+}
