@@ -14,6 +14,12 @@
 
 namespace relt {
 
+// A contribution of next-event estimation whose weight waits for the light subpath factor.
+struct WeightedLater {
+  Color value{0.0f};  // unweighted
+  CameraTechniqueWeight weight{0.0f, 0.0f, false};
+};
+
 class VcmTracer {
  public:
   // `merges` (optional) counts the light vertices merged with.
@@ -29,6 +35,22 @@ class VcmTracer {
   void traceCameraPath(const Vec2& film, SampleSource& u, std::span<const LightVertex> own,
                        std::span<const LightVertex* const> all, const HashGrid* grid, PathSample& out) const;
 
+  // The camera subpath through `film`, vertex by vertex: onEmitter(s, hit, wo, le) where it finds
+  // emission le, onSurface(s, hit, wo, bsdf) at every non-specular vertex (false: the subpath ends
+  // there). s is the subpath's state on arrival.
+  template <class OnEmitter, class OnSurface>
+  void walkCamera(const Vec2& film, SampleSource& u, OnEmitter&& onEmitter, OnSurface&& onSurface) const;
+
+  // The techniques one camera vertex x (state s, leaving towards wo) takes, for meb, which calls
+  // them from either end: next-event estimation with its weight kept apart; x joined to light
+  // vertex y (weighted); merging with y: f y.beta times its weight, which the caller multiplies
+  // by s.beta and mis().mergeNormalisation().
+  WeightedLater nextEventLater(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf,
+                               SampleSource& u) const;
+  Color connect(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf, const LightVertex& y) const;
+  Color mergeOne(const VcmSubpath& s, const Vec3& wo, const Bsdf& bsdf, const LightVertex& y) const;
+  const VcmMis& mis() const { return mis_; }
+
  private:
   bool startLightPath(SampleSource& u, VcmSubpath& s) const;
   // Traces the subpath's next segment to `hit`; false: it leaves the scene.
@@ -37,8 +59,6 @@ class VcmTracer {
   bool scatter(const Bsdf& bsdf, const SurfacePoint& sp, const Vec3& wo, TransportMode mode, SampleSource& u,
                SampleStream stream, VcmSubpath& s) const;
   void connectToCamera(const LightVertex& y, const Bsdf& bsdf, PathSample& splats) const;
-  Color nextEvent(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf, SampleSource& u) const;
-  Color connect(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf, const LightVertex& y) const;
   Color merge(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf,
               std::span<const LightVertex* const> all, const HashGrid& grid) const;
 
@@ -46,5 +66,27 @@ class VcmTracer {
   VcmMis mis_;
   PerWorkerCount* merges_;
 };
+
+template <class OnEmitter, class OnSurface>
+void VcmTracer::walkCamera(const Vec2& film, SampleSource& u, OnEmitter&& onEmitter, OnSurface&& onSurface) const {
+  VcmSubpath s;
+  s.dir = ctx_.camera.direction(film);
+  const float pdfCamera = ctx_.camera.pdfDirection(s.dir);
+  if (!(pdfCamera > 0.0f)) return;
+  mis_.startCamera(s, pdfCamera);
+  s.origin = s.last;
+  const int maxDepth = ctx_.settings.maxDepth;
+  while (true) {
+    SurfacePoint hit;
+    if (!advance(s, hit)) return;
+    const Vec3 wo = -s.dir;  // the traced ray's, as bdpt samples with (path/vertex.h)
+    const Color le = ctx_.lights.emitted(hit, wo);
+    if (!isBlack(le)) onEmitter(static_cast<const VcmSubpath&>(s), hit, wo, le);
+    if (s.length >= maxDepth) return;
+    const Bsdf bsdf(ctx_.scene.materials[hit.material], hit.ns, hit.ng);
+    if (!bsdf.isDelta() && !onSurface(static_cast<const VcmSubpath&>(s), hit, wo, bsdf)) return;
+    if (!scatter(bsdf, hit, wo, TransportMode::Radiance, u, SampleStream::Camera, s)) return;
+  }
+}
 
 }  // namespace relt
