@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "integrators/bdpt/bdpt_integrator.h"
 #include "integrators/erpt/erpt_integrator.h"
+#include "integrators/meb/meb_integrator.h"
 #include "integrators/mmlt/mmlt_integrator.h"
 #include "integrators/pssmlt/pssmlt_integrator.h"
 #include "integrators/pt/pt_integrator.h"
@@ -25,6 +26,7 @@ std::vector<const IntegratorEntry*>& entries() {
       &erptIntegrator(),
       &reltIntegrator(),
       &vcmIntegrator(),
+      &mebIntegrator(),
   };
   return all;
 }

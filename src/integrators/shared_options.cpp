@@ -8,7 +8,7 @@
 namespace relt {
 
 void addSharedOptions(CLI::App& cmd, RenderSettings& r) {
-  cmd.add_option("--spp", r.spp, "pt, bdpt, erpt, vcm: samples per pixel (vcm: iterations; default " + std::to_string(kDefaultSpp) + ")")
+  cmd.add_option("--spp", r.spp, "pt, bdpt, erpt, vcm, meb: samples per pixel (vcm, meb: iterations; default " + std::to_string(kDefaultSpp) + ")")
       ->check(CLI::Range(1, 1 << 24));
   cmd.add_option("--mutations-per-pixel", r.mutationsPerPixel,
                  "Markov-chain integrators: mutations per pixel (default " +
@@ -41,7 +41,7 @@ void addSharedOptions(CLI::App& cmd, RenderSettings& r) {
 
 const char* sharedOptionHint(const std::string& option) {
   static const std::map<std::string, const char*> hints = {
-      {"--spp", "the Markov-chain integrators take --mutations-per-pixel"},
+      {"--spp", "pssmlt, mmlt and relt take --mutations-per-pixel"},
       {"--mutations-per-pixel", "the others take --spp"},
       {"--chains", "relt's chains are ladders x levels: --ladders, --levels"},
   };

@@ -144,6 +144,12 @@ TEST(Checkpoint, VcmResumedIsTheRenderThatNeverStopped) {
   expectRefused(dir, " --spp 7 --integrator vcm --vcm-mode bpt --width 40 --height 30 --seed 3");
 }
 
+// meb's the same way (its loop is vcm's), with its chains restarted every iteration.
+TEST(Checkpoint, MebResumedIsTheRenderThatNeverStopped) {
+  const std::string dir = expectPassesResumed("meb", " --integrator meb --width 40 --height 30 --seed 3", 3, 7);
+  expectRefused(dir, " --spp 7 --integrator meb --meb-pairs 3 --width 40 --height 30 --seed 3");
+}
+
 // SIGTERM mid-render (to mpirun, which forwards it): every rank stops at the next round, writes
 // the image so far and a checkpoint; resuming it finishes the uninterrupted image. A rank killed
 // with -9 leaves the last periodic checkpoint, which resumes just as well.

@@ -119,7 +119,7 @@ double secondsUntilWritten(const std::string& integrator, bool checkpoint, const
 // placement, and in pssmlt's and relt's direct-emission pass (here 2^20 rays per pixel: minutes),
 // before any chain.
 TEST(InterruptionLatency, AfterSigtermToMpirunTheImageAndCheckpointAreWrittenWithin08Seconds) {
-  for (const char* integrator : {"relt", "pt", "bdpt", "pssmlt", "mmlt", "erpt", "vcm"})
+  for (const char* integrator : {"relt", "pt", "bdpt", "pssmlt", "mmlt", "erpt", "vcm", "meb"})
     EXPECT_LT(secondsUntilWritten(integrator, true), 0.8) << integrator;
   EXPECT_LT(secondsUntilWritten("bdpt", true, "", "--width 768 --height 768"), 0.8) << "bdpt inside a long pass";
   // Packed placement reads its messages back 256 rounds late here (a long render's lag; 2 s at

@@ -184,7 +184,7 @@ TEST(ThreadIndependence, EveryIntegratorsImageIsTheSameOnAnySplitOfRanksAndThrea
   for (const Case& c : {Case{"pt", "--spp 3"}, Case{"bdpt", "--spp 3"}, Case{"erpt", "--spp 1 --chain-length 10"},
                         Case{"pssmlt", "--mutations-per-pixel 4 --chains 7"},
                         Case{"mmlt", "--mutations-per-pixel 8 --chains 9"}, Case{"relt", relt},
-                        Case{"vcm", "--spp 3"}}) {
+                        Case{"vcm", "--spp 3"}, Case{"meb", "--spp 3 --meb-pairs 5"}}) {
     SCOPED_TRACE(c.integrator);
     const std::string dir = makeTempDir("threads-" + c.integrator);
     const Image one = renderWithRanks(1, c.integrator, dir, c.amount + " --threads 1");

@@ -37,5 +37,5 @@ TEST_P(Snapshot, MidRenderImageIsAValidExrCloseToTheFinalOne) {
   EXPECT_NEAR(snapshot.mean(), final.mean(), 0.1 * final.mean());
 }
 
-INSTANTIATE_TEST_SUITE_P(Integrators, Snapshot, ::testing::Values("pssmlt", "relt", "pt", "bdpt", "erpt", "vcm"),
+INSTANTIATE_TEST_SUITE_P(Integrators, Snapshot, ::testing::Values("pssmlt", "relt", "pt", "bdpt", "erpt", "vcm", "meb"),
                          [](const auto& info) { return info.param; });

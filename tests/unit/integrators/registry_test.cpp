@@ -21,13 +21,13 @@ const IntegratorEntry& entry(const std::string& name) {
   return *e;
 }
 
-TEST(Registry, HasTheSevenIntegratorsInHelpOrder) {
+TEST(Registry, HasTheEightIntegratorsInHelpOrder) {
   std::vector<std::string> names;
   for (const IntegratorEntry* e : integrators()) names.push_back(e->kind.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"pt", "bdpt", "pssmlt", "mmlt", "erpt", "relt", "vcm"}));
-  EXPECT_EQ(findIntegrator("meb"), nullptr);
+  EXPECT_EQ(names, (std::vector<std::string>{"pt", "bdpt", "pssmlt", "mmlt", "erpt", "relt", "vcm", "meb"}));
+  EXPECT_EQ(findIntegrator("melt"), nullptr);
   RenderSettings s;
-  EXPECT_THROW(selectIntegrator(s, "meb"), std::invalid_argument);
+  EXPECT_THROW(selectIntegrator(s, "melt"), std::invalid_argument);
   EXPECT_EQ(s.integrator.name, kDefaultIntegrator);
 }
 
@@ -73,7 +73,7 @@ TEST(Registry, AnOptionIsRefusedOnlyWhereItIsUnused) {
   EXPECT_EQ(*unusedOptionReason("--ladders", entry("pssmlt")), "only for --integrator relt");
   EXPECT_EQ(*unusedOptionReason("--chain-length", entry("relt")), "only for --integrator erpt");
   EXPECT_EQ(*unusedOptionReason("--spp", entry("relt")),
-            "only for --integrator pt, bdpt, erpt and vcm (the Markov-chain integrators take --mutations-per-pixel)");
+            "only for --integrator pt, bdpt, erpt, vcm and meb (pssmlt, mmlt and relt take --mutations-per-pixel)");
 }
 
 TEST(Registry, OptionsOutsideTheTableAreEveryIntegrators) {

@@ -1,0 +1,8 @@
+#pragma once
+#include "integrators/integrator.h"
+
+namespace relt {
+
+const IntegratorEntry& mebIntegrator();
+
+}  // namespace relt
