@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 namespace relt {
 
@@ -30,7 +31,71 @@ std::optional<ClassLuminance> classLuminance(const PathSample& sample) {
   return L;
 }
 
+uint64_t idleLevels(const FamilySettings& settings, const std::vector<double>& bootstrap) {
+  if (settings.kind == FamilyKind::Tempered) return 0;
+  FamilySettings full = settings;
+  full.leftOut = 0;
+  const double meanTarget = LevelFamily::meanTarget(full, bootstrap);
+  if (!(meanTarget > 0.0)) return 0;  // a black bootstrap: nothing to choose by
+  const LevelFamily family(full, meanTarget);
+  const size_t m = size_t(family.levels()), n = size_t(kPathClassCount);
+  std::vector<double> target(m, 0.0), q(m);
+  std::array<double, kPathClassCount> cls{};
+  for (size_t i = 0; i + n <= bootstrap.size(); i += n) {
+    family.targets(bootstrap.data() + i, q.data());
+    for (size_t k = 0; k < m; ++k) target[k] += q[k];
+    for (size_t c = 0; c < n; ++c) cls[c] += bootstrap[i + c];
+  }
+  uint64_t idle = 0;
+  for (size_t k = 0; k < m; ++k) {
+    bool estimatesSome = false;
+    for (size_t c = 0; c < n; ++c) estimatesSome = estimatesSome || (family.estimates(int(k), int(c)) && cls[c] > 0.0);
+    if (!(target[k] > 0.0) || !estimatesSome) idle |= uint64_t(1) << k;
+  }
+  return idle == (uint64_t(1) << m) - 1 ? 0 : idle;
+}
+
 LevelFamily::LevelFamily(const FamilySettings& settings, double meanTarget) : kind_(settings.kind) {
+  buildLadder(settings, meanTarget);
+  leaveOut(settings.leftOut);
+}
+
+std::vector<std::string> LevelFamily::leftOutNames(const FamilySettings& settings) {
+  FamilySettings full = settings;
+  full.leftOut = 0;
+  const LevelFamily family(full, 1.0);
+  std::vector<std::string> names;
+  for (int k = 0; k < family.levels(); ++k)
+    if (settings.leftOut >> k & 1) names.push_back(family.name(k));
+  return names;
+}
+
+// Without the given levels. A class none of the rest estimated goes to each remaining level whose
+// target is positive wherever that class is (an offset, or a weight on the class), so the levels
+// that estimate it still cover it; for kitaoka that is all three.
+void LevelFamily::leaveOut(uint64_t out) {
+  if (!out) return;
+  if (kind_ == FamilyKind::Tempered) throw std::invalid_argument("tempered levels are never left out");
+  std::array<bool, kPathClassCount> covered{}, orphaned{};
+  std::vector<Level> kept;
+  for (size_t k = 0; k < levels_.size(); ++k) {
+    const bool leave = k < 64 && (out >> k & 1);
+    for (size_t n = 0; n < kPathClassCount; ++n) (leave ? orphaned : covered)[n] |= levels_[k].estimates[n];
+    if (!leave) kept.push_back(levels_[k]);
+  }
+  if (kept.empty()) throw std::invalid_argument("every level of the ladder left out");
+  for (size_t n = 0; n < kPathClassCount; ++n) {
+    if (!orphaned[n] || covered[n]) continue;
+    for (Level& level : kept) {
+      level.estimates[n] = level.offset > 0.0 || level.weight[n] > 0.0;
+      covered[n] = covered[n] || level.estimates[n];
+    }
+    if (!covered[n]) throw std::invalid_argument("no level that remains reaches a class of the left-out ones");
+  }
+  levels_ = std::move(kept);
+}
+
+void LevelFamily::buildLadder(const FamilySettings& settings, double meanTarget) {
   if (kind_ == FamilyKind::Kitaoka) {
     // Kitaoka et al.'s replicas (Sec. 4.2.3) from the most specific to the uniform one, so that
     // neighbours in the ladder are neighbours in their exchange order. Class L0 (implicit paths

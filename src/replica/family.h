@@ -8,6 +8,7 @@
 // re-evaluates the connection BSDFs per level. Either way one traced path gives every level's
 // target: the family reads a few numbers per path (its features) and maps them to targets.
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
@@ -46,7 +47,20 @@ struct FamilySettings {
   double regularisationDecay = 1e-5;  // tempered: gamma
   KelemenSizes sizes;          // the chains' small-step sizes (kitaoka scales them per level)
   float largeStepProbability = kDefaultLargeStepProbability;
+  // Levels left out of the ladder (bit k: level k of the full ladder; see idleLevels). A class
+  // that only left-out levels estimated is estimated by every level that remains.
+  uint64_t leftOut = 0;
 };
+
+class LevelFamily;
+
+// The levels with nothing to do by the bootstrap (`bootstrap`: the family's features per sample,
+// as LevelFamily::meanTarget takes them): a target 0 on every sample (its chain would reject every
+// proposal), or no sample in any class the level estimates (its chain would splat nothing:
+// kitaoka's specific level, which alone estimates L0, on a scene without implicit paths after a
+// specular bounce, a quarter of the ladder's work). Bit k: level k. Only the linear families
+// (kitaoka, relaxed) are looked at; nothing when the bootstrap is black or every level is idle.
+uint64_t idleLevels(const FamilySettings& settings, const std::vector<double>& bootstrap);
 
 class LevelFamily {
  public:
@@ -82,6 +96,8 @@ class LevelFamily {
   const KelemenSizes& sizes(int level) const { return levels_[size_t(level)].sizes; }
   float largeStepProbability(int level) const { return levels_[size_t(level)].largeStepProbability; }
   const std::string& name(int level) const { return levels_[size_t(level)].name; }
+  // The names of the levels `settings.leftOut` takes out of the full ladder, in ladder order.
+  static std::vector<std::string> leftOutNames(const FamilySettings& settings);
   // Offsets and class weights, for stats.json.
   double offset(int level) const { return levels_[size_t(level)].offset; }
 
@@ -94,6 +110,9 @@ class LevelFamily {
     KelemenSizes sizes;
     float largeStepProbability = kDefaultLargeStepProbability;
   };
+  void buildLadder(const FamilySettings& settings, double meanTarget);
+  void leaveOut(uint64_t levels);
+
   FamilyKind kind_;
   std::vector<Level> levels_;
   std::vector<double> temperatures_;  // tempered only

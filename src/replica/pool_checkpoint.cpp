@@ -7,8 +7,8 @@
 namespace relt {
 namespace {
 
-constexpr uint64_t kPartVersion = 3;
-constexpr size_t kMeanTargetAt = 6;  // the word after the header
+constexpr uint64_t kPartVersion = 4;
+constexpr size_t kMeanTargetAt = 6;  // the word after the header, then the left-out levels
 
 void writeCounters(WordWriter& w, const LevelCounters& c) {
   for (uint64_t v : {c.smallProposed, c.smallAccepted, c.largeProposed, c.largeAccepted, c.invalidProposals, c.nonFinite})
@@ -53,10 +53,14 @@ void readChainRecords(WordReader& in, std::vector<std::vector<uint64_t>>& record
 
 }  // namespace
 
-double ReplicaPool::checkpointMeanTarget(const std::vector<std::vector<uint64_t>>& parts) {
-  if (parts.empty() || parts[0].size() <= kMeanTargetAt || parts[0][0] != kPartVersion)
+CheckpointBootstrap ReplicaPool::checkpointBootstrap(const std::vector<std::vector<uint64_t>>& parts) {
+  if (parts.empty() || parts[0].size() <= kMeanTargetAt + 1 || parts[0][0] != kPartVersion)
     throw std::runtime_error("the checkpoint holds no replica state of this version");
-  return WordReader(parts[0], kMeanTargetAt).f64();
+  WordReader in(parts[0], kMeanTargetAt);
+  CheckpointBootstrap out;
+  out.meanTarget = in.f64();
+  out.leftOut = in.u64();
+  return out;
 }
 
 std::vector<uint64_t> ReplicaPool::checkpointPart() const {
@@ -67,6 +71,7 @@ std::vector<uint64_t> ReplicaPool::checkpointPart() const {
     w.u64(v);
   const NormaliserLedger::State ledger = ledger_.state();
   w.f64(meanTarget_);
+  w.u64(settings_.family.leftOut);
   w.f64(ledger.bootstrapSamples);
   w.u64(stepsPerChain_);
   w.u64(ledger.epoch);
@@ -116,8 +121,10 @@ void ReplicaPool::restore(const std::vector<std::vector<uint64_t>>& parts) {
     const bool local = in.u64() != 0;
     NormaliserLedger::State ledger;
     const double meanTarget = in.f64();
+    const uint64_t leftOut = in.u64();
     ledger.bootstrapSamples = in.f64();
-    if (meanTarget != meanTarget_) throw std::runtime_error("the checkpoint's bootstrap is not this pool's");
+    if (meanTarget != meanTarget_ || leftOut != settings_.family.leftOut)
+      throw std::runtime_error("the checkpoint's bootstrap is not this pool's");
     const uint64_t steps = in.u64();
     ledger.epoch = in.u64();
     const double floor = in.f64();

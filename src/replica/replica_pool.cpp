@@ -12,6 +12,11 @@ namespace {
 
 constexpr uint64_t kExchangePurpose = 0xe8c4;
 
+ReplicaSettings withoutIdleLevels(ReplicaSettings settings, const std::vector<double>& bootstrap) {
+  settings.family.leftOut = idleLevels(settings.family, bootstrap);
+  return settings;
+}
+
 }  // namespace
 
 std::vector<double> bootstrapFeatures(PssEvaluator& eval, const FamilySettings& family, uint64_t seed, int count,
@@ -30,7 +35,8 @@ std::vector<double> bootstrapFeatures(PssEvaluator& eval, const FamilySettings& 
 
 ReplicaPool::ReplicaPool(PerWorker<PssEvaluator>& evals, const ReplicaSettings& settings, uint64_t seed,
                          const std::vector<double>& bootstrap, int rank, int ranks)
-    : ReplicaPool(evals, settings, seed, LevelFamily::meanTarget(settings.family, bootstrap), rank, ranks) {
+    : ReplicaPool(evals, withoutIdleLevels(settings, bootstrap), seed, LevelFamily::meanTarget(settings.family, bootstrap),
+                  rank, ranks) {
   startFromBootstrap(bootstrap);
 }
 
@@ -330,6 +336,7 @@ void ReplicaPool::exchange(int group, const std::vector<std::vector<double>>& me
     TargetMatrix q(m);
     for (int i = 0; i < m; ++i)
       for (int j = 0; j < m; ++j) q(i, j) = targets(holder[size_t(j)])[i];
+    q.normaliseRows(estimator_.normalisers());  // this round's, the same on every rank
     Rng rng(hashKey(seed_, kExchangePurpose, uint64_t(ladder), round));
     const std::vector<int> from = exchangeLevels(settings_.exchange, q, round, rng, &tally_);
     for (int i = 0; i < m; ++i) {

@@ -47,17 +47,25 @@ struct RoundAgreement {
   bool fresh = false;
 };
 
+// What a checkpoint keeps of the bootstrap: the family's scale and the levels left out.
+struct CheckpointBootstrap {
+  double meanTarget = 0.0;
+  uint64_t leftOut = 0;
+};
+
 class ReplicaPool {
  public:
   // `bootstrap` holds every bootstrap sample's features (bootstrapFeatures, summed over ranks).
-  // One evaluator per worker thread of the rank (runRound deals the chains to them).
+  // One evaluator per worker thread of the rank (runRound deals the chains to them). The levels
+  // the bootstrap finds idle (idleLevels) are left out of the ladder: settings().family.leftOut.
   ReplicaPool(PerWorker<PssEvaluator>& evals, const ReplicaSettings& settings, uint64_t seed,
               const std::vector<double>& bootstrap, int rank, int ranks);
   // A pool to restore() a checkpoint into: no bootstrap is taken again, the family's scale (the
-  // bootstrap's mean target) comes from the checkpoint (checkpointMeanTarget).
+  // bootstrap's mean target) and the levels left out come from the checkpoint (checkpointBootstrap;
+  // `settings.family.leftOut` must be the checkpoint's).
   ReplicaPool(PerWorker<PssEvaluator>& evals, const ReplicaSettings& settings, uint64_t seed, double meanTarget,
               int rank, int ranks);
-  static double checkpointMeanTarget(const std::vector<std::vector<uint64_t>>& parts);
+  static CheckpointBootstrap checkpointBootstrap(const std::vector<std::vector<uint64_t>>& parts);
   ReplicaPool(const ReplicaPool&) = delete;  // chains refer to family_
   ReplicaPool& operator=(const ReplicaPool&) = delete;
 

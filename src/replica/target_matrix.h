@@ -1,7 +1,9 @@
 #pragma once
 // The targets of one ladder's levels evaluated on the states its chains hold (DESIGN §3.5):
-// Q(i, j) = q_i(state held by level j). Exchange moves read nothing else; normalisers cancel in
-// every ratio they form.
+// Q(i, j) = q_i(state held by level j) / b_i, normalised by the round's b_i. Exchange moves read
+// nothing else. The normalisers cancel in every acceptance ratio; they matter where a move
+// chooses among partners (the importance-sampled swap: pi_i(x_k) pi_k(x_i)).
+#include <cmath>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -16,6 +18,14 @@ class TargetMatrix {
   double operator()(int level, int state) const { return q_[index(level, state)]; }
   double& operator()(int level, int state) { return q_[index(level, state)]; }
 
+  // Q(i, j) / b_i for every level with a positive finite normaliser b_i (the others as they are).
+  void normaliseRows(const std::vector<double>& b) {
+    for (int i = 0; i < m_ && size_t(i) < b.size(); ++i) {
+      const double bi = b[size_t(i)];
+      if (!(bi > 0.0) || !std::isfinite(bi)) continue;
+      for (int j = 0; j < m_; ++j) (*this)(i, j) /= bi;
+    }
+  }
   // States j and k change levels: every level's targets on them change places (columns swap).
   void swapStates(int j, int k) {
     for (int i = 0; i < m_; ++i) std::swap((*this)(i, j), (*this)(i, k));

@@ -8,6 +8,7 @@
 #include <deque>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include "checkpoint/checkpoint.h"
 #include "core/clock.h"
@@ -22,15 +23,15 @@
 namespace relt {
 namespace {
 
-// The family's scale of the render a checkpoint continues (a broken part: one named error).
-double checkpointMeanTarget(const Resumed& checkpoint) {
+// The family's scale and the levels left out of the render a checkpoint continues (a broken part:
+// one named error).
+CheckpointBootstrap checkpointBootstrap(const Resumed& checkpoint) {
   try {
-    return ReplicaPool::checkpointMeanTarget(checkpoint.parts);
+    return ReplicaPool::checkpointBootstrap(checkpoint.parts);
   } catch (const std::runtime_error& e) {
     throw InputError(checkpoint.file, "", e.what());
   }
 }
-
 
 // The sum of every level's film, reduced onto the root.
 std::vector<double> reducedSum(Job& job, const std::vector<Film>& films) {
@@ -149,6 +150,7 @@ ReltOutcome outcomeOf(Job& job, const ReplicaPool& pool, const ReplicaSchedule& 
   out.ladders = pool.settings().ladders;
   out.levels = pool.levels();
   for (int k = 0; k < pool.levels(); ++k) out.levelNames.push_back(pool.family().name(k));
+  out.leftOutNames = LevelFamily::leftOutNames(pool.settings().family);
   out.normalisers = pool.normalisers();
   out.placement = pool.placement();
   out.tally = pool.localDecisions() ? sumOverRanks(job, pool.tally()) : pool.tally();
@@ -181,15 +183,28 @@ ReltOutcome outcomeOf(Job& job, const ReplicaPool& pool, const ReplicaSchedule& 
 void bootstrapPool(std::optional<ReplicaPool>& pool, PerWorker<PssEvaluator>& eval, const ReplicaSettings& rs,
                    uint64_t seed, Job& job, const Resumed* checkpoint) {
   if (checkpoint) {
-    pool.emplace(eval, rs, seed, checkpointMeanTarget(*checkpoint), job.rank(), job.size());
-    return;
+    const CheckpointBootstrap b = checkpointBootstrap(*checkpoint);
+    ReplicaSettings resumed = rs;
+    resumed.family.leftOut = b.leftOut;
+    pool.emplace(eval, resumed, seed, b.meanTarget, job.rank(), job.size());
+  } else {
+    std::vector<double> features =
+        sumOfWorkerShares(eval.size(), job.rank(), job.size(), [&](int w, int first, int stride) {
+          return bootstrapFeatures(eval[w], rs.family, seed, rs.bootstrap, first, stride);
+        });
+    job.allreduceSum(features);
+    pool.emplace(eval, rs, seed, features, job.rank(), job.size());
   }
-  std::vector<double> features =
-      sumOfWorkerShares(eval.size(), job.rank(), job.size(), [&](int w, int first, int stride) {
-        return bootstrapFeatures(eval[w], rs.family, seed, rs.bootstrap, first, stride);
-      });
-  job.allreduceSum(features);
-  pool.emplace(eval, rs, seed, features, job.rank(), job.size());
+  const std::vector<std::string> idle = LevelFamily::leftOutNames(pool->settings().family);
+  if (job.rank() == 0 && !idle.empty()) {
+    std::string names;
+    for (const std::string& n : idle) names += (names.empty() ? "" : ", ") + n;
+    std::fprintf(stderr,
+                 "relt: warning: level%s %s left out of the ladder: no bootstrap sample reached %s target; "
+                 "the levels that remain estimate %s path classes\n",
+                 idle.size() > 1 ? "s" : "", names.c_str(), idle.size() > 1 ? "their" : "its",
+                 idle.size() > 1 ? "their" : "its");
+  }
 }
 
 }  // namespace

@@ -18,6 +18,7 @@ struct ReltOutcome {
   uint64_t stepsPerChain = 0;
   int ladders = 0, levels = 0;
   std::vector<std::string> levelNames;
+  std::vector<std::string> leftOutNames;   // levels the bootstrap found idle (idleLevels)
   std::vector<double> normalisers;          // b_k at the end
   std::vector<LevelCounters> perLevel;      // summed over ranks
   ExchangeTally tally;

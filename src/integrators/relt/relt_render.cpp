@@ -49,6 +49,7 @@ nlohmann::json reltStats(const ReltOutcome& o) {
     levels.push_back(l);
   }
   j["levels"] = levels;
+  j["levels_left_out"] = o.leftOutNames;
   return j;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "chi_square.h"
 #include "replica/exchange.h"
@@ -23,6 +24,21 @@ TEST(SwapAcceptance, IsTheMetropolisRatioOfTheSwappedProducts) {
   EXPECT_EQ(swapAcceptance(q, 0, 1), 1.0) << "always away from a zero target";
   q(1, 0) = NAN;
   EXPECT_EQ(swapAcceptance(q, 0, 1), 0.0);
+}
+
+// Rows divided by their normalisers: acceptance ratios stay, and a row whose normaliser is not a
+// positive number stays as it is.
+TEST(TargetMatrix, NormalisedRowsKeepTheSwapAcceptance) {
+  TargetMatrix q(3);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) q(i, j) = 1.0 + i + 2.0 * j * j;
+  TargetMatrix n = q;
+  n.normaliseRows({4.0, 0.0, 0.5});
+  EXPECT_DOUBLE_EQ(n(0, 2), q(0, 2) / 4.0);
+  EXPECT_DOUBLE_EQ(n(1, 2), q(1, 2)) << "b = 0: left as it is";
+  EXPECT_DOUBLE_EQ(n(2, 1), q(2, 1) * 2.0);
+  for (auto [i, j] : {std::pair{0, 1}, std::pair{0, 2}, std::pair{1, 2}})
+    EXPECT_NEAR(swapAcceptance(n, i, j), swapAcceptance(q, i, j), 1e-15);
 }
 
 namespace {

@@ -4,6 +4,9 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "replica/family.h"
 #include "replica/level_estimator.h"
@@ -51,6 +54,44 @@ TEST(LevelFamily, KitaokaLevelsAreSpecificIndirectFullUniform) {
   EXPECT_LT(f.sizes(0).s1, f.sizes(1).s1);
 }
 
+// Bootstrap features: class luminances L0..L5 per sample.
+TEST(IdleLevels, AreTheLevelsNoBootstrapSampleReached) {
+  const FamilySettings kitaoka = kitaokaSettings();
+  const std::vector<double> noImplicitSpecular = {0, 1, 2, 0, 0, 0, 0, 0, 3, 1, 0, 0};
+  EXPECT_EQ(idleLevels(kitaoka, noImplicitSpecular), 1u) << "the specific level: target L0 + delta L5 is 0";
+  EXPECT_EQ(idleLevels(kitaoka, {0, 1, 2, 0, 0, 0, 0, 0, 0, 0, 0, 0.5}), 1u)
+      << "L5 reaches its target, but it estimates L0 alone, and no sample had any";
+  EXPECT_EQ(idleLevels(kitaoka, {0.1, 1, 2, 0, 0, 0}), 0u) << "an implicit path after a specular bounce";
+  EXPECT_EQ(idleLevels(kitaoka, {0, 0, 2, 0, 0, 0}), 3u) << "indirect (L0 + L3..L5) neither; full and uniform do";
+  EXPECT_EQ(idleLevels(kitaoka, std::vector<double>(12, 0.0)), 0u) << "a black bootstrap: nothing to choose";
+  FamilySettings relaxed;
+  relaxed.kind = FamilyKind::Relaxed;
+  EXPECT_EQ(idleLevels(relaxed, noImplicitSpecular), 0u);
+  FamilySettings tempered;
+  tempered.kind = FamilyKind::Tempered;
+  tempered.levels = 2;
+  EXPECT_EQ(idleLevels(tempered, {1.0, 0.0, 2.0, 0.0}), 0u) << "tempered levels are never left out";
+}
+
+TEST(LevelFamily, ALeftOutLevelHandsItsClassesToTheLevelsThatReachThem) {
+  FamilySettings s = kitaokaSettings();
+  s.leftOut = 1;  // specific
+  const LevelFamily f(s, 1.0);
+  ASSERT_EQ(f.levels(), 3);
+  EXPECT_EQ(f.name(0), "indirect");
+  EXPECT_EQ(f.name(2), "uniform");
+  EXPECT_EQ(LevelFamily::leftOutNames(s), std::vector<std::string>{"specific"});
+  double q[3];
+  f.targets(kL, q);
+  EXPECT_DOUBLE_EQ(q[1], 63.0) << "the remaining levels' targets are as before";
+  for (int k = 0; k < 3; ++k)
+    for (int n = 0; n < kPathClassCount; ++n) EXPECT_TRUE(f.estimates(k, n)) << "level " << k << " class " << n;
+  s.leftOut = 2 | 4 | 8;  // all but specific: L1..L4 would have no level whose target reaches them
+  EXPECT_THROW(LevelFamily(s, 1.0), std::invalid_argument);
+  s.leftOut = 15;
+  EXPECT_THROW(LevelFamily(s, 1.0), std::invalid_argument);
+}
+
 TEST(LevelFamily, RelaxedEpsGrowGeometricallyWithTheMeanTarget) {
   FamilySettings s;
   s.kind = FamilyKind::Relaxed;
@@ -76,6 +117,7 @@ TEST(LevelEstimator, WeightsOfEveryClassSumToOne) {
     for (bool kitaoka : {false, true}) {
       FamilySettings s = kitaokaSettings();
       if (!kitaoka) s.kind = FamilyKind::Relaxed;
+      if (kitaoka && beta == 2.0) s.leftOut = 1;  // L0 then weighted over the three that remain
       const LevelFamily f(s, 3.0);
       LevelEstimator e(f, beta);
       std::vector<double> b(static_cast<size_t>(f.levels()));

@@ -465,9 +465,12 @@ struct LoopRun {
 LoopRun runLoopSized(Fixture& fx, const std::vector<double>& lum, double mpp, const LoopRun* resumeFrom, int w, int h) {
   // A resumed pool takes no bootstrap: what it needs of it is in the checkpoint.
   std::optional<ReplicaPool> pooled;
-  if (resumeFrom)
-    pooled.emplace(*fx.eval, fx.settings, 5, ReplicaPool::checkpointMeanTarget({resumeFrom->part}), 0, 1);
-  else
+  if (resumeFrom) {
+    const CheckpointBootstrap b = ReplicaPool::checkpointBootstrap({resumeFrom->part});
+    ReplicaSettings resumed = fx.settings;
+    resumed.family.leftOut = b.leftOut;
+    pooled.emplace(*fx.eval, resumed, 5, b.meanTarget, 0, 1);
+  } else
     pooled.emplace(*fx.eval, fx.settings, 5, lum, 0, 1);
   ReplicaPool& pool = *pooled;
   ReplicaSchedule schedule(double(w) * h, pool.chainCount(), fx.settings.exchangeInterval, std::nullopt, mpp);
@@ -584,6 +587,35 @@ TEST(ReplicaPool, AResumedRenderIsTheRenderThatNeverStopped) {
     }
     fx.settings.placement = Placement::Auto;
   }
+}
+
+// cornell-box has no implicit path after a specular bounce: kitaoka's specific level (L0 + delta L5)
+// sees nothing in the bootstrap and is left out, its class L0 going to the other three; a render
+// resumed from a checkpoint keeps the same ladder and is the render that never stopped.
+TEST(ReplicaPool, AnIdleLevelIsLeftOutAndStaysOutWhenResumed) {
+  Fixture fx;
+  fx.settings.family.kind = FamilyKind::Kitaoka;
+  fx.settings.ladders = 2;
+  fx.settings.exchangeInterval = 10;
+  fx.settings.exchange.move = ExchangeMove::Deo;
+  const std::vector<double> lum = bootstrapFeatures((*fx.eval)[0], fx.settings.family, 5, fx.settings.bootstrap, 0, 1);
+  {
+    const ReplicaPool pool(*fx.eval, fx.settings, 5, lum, 0, 1);
+    ASSERT_EQ(pool.levels(), 3);
+    EXPECT_EQ(pool.settings().family.leftOut, 1u);
+    EXPECT_EQ(pool.chainCount(), 6) << "no chain for the left-out level";
+    EXPECT_EQ(pool.family().name(0), "indirect");
+    for (int k = 0; k < 3; ++k) EXPECT_TRUE(pool.family().estimates(k, 0)) << "L0 handed to level " << k;
+    for (double b : pool.normalisers()) EXPECT_GT(b, 0.0);
+  }
+  // 6 chains, 192 pixels: 5 mpp = 160 steps = 16 rounds, 10 mpp = 32 rounds.
+  const LoopRun whole = runLoopSized(fx, lum, 10.0, nullptr, 16, 12);
+  const LoopRun half = runLoopSized(fx, lum, 5.0, nullptr, 16, 12);
+  ASSERT_EQ(half.rounds, 16u);
+  const LoopRun resumed = runLoopSized(fx, lum, 10.0, &half, 16, 12);
+  EXPECT_EQ(resumed.normalisers, whole.normalisers);
+  EXPECT_EQ(resumed.films[0].data(), whole.films[0].data());
+  EXPECT_GT(sum(whole.films), 0.0);
 }
 
 // Tempered targets whose regularisation moves every 12 % more steps (decay 0.1): faster than the
