@@ -7,6 +7,7 @@
 # Usage: scripts/bench/relt_ladder.sh [SCENE...]   env: SEEDS ("1 2"), LENGTHS ("30"), ARGS (extra)
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
+source "$ROOT/scripts/bench/common.sh"
 read -r -a SEED_LIST <<< "${SEEDS:-1 2}"
 read -r -a LENGTH_LIST <<< "${LENGTHS:-30}"
 read -r -a EXTRA <<< "${ARGS:-}"
@@ -23,8 +24,7 @@ for scene in "${SCENES[@]}"; do
       run="$OUT/$scene-s$seed-$secs"
       "${MPIRUN[@]}" -np 2 "$BUILD_DIR/relt" render "$ROOT/scenes/$scene.gltf" -o "$run.exr" --stats "$run.json" \
         --time "$secs" --seed "$seed" --integrator relt "${EXTRA[@]}" 2> "$run.log"
-      c="$("$BUILD_DIR/relt" compare "$run.exr" "$ROOT/scenes/references/$scene.exr" | /usr/bin/python3 -c \
-        "import json,sys; c=json.load(sys.stdin); print('%.6g,%.6g,%.6g,%.6g' % (c['rmse'], c['rel_mse'], c['mean'], c['reference_mean']))")"
+      c="$(compare_row "$run.exr" "$ROOT/scenes/references/$scene.exr")"
       out="$(/usr/bin/python3 -c "import json,sys; print(' '.join(json.load(open(sys.argv[1]))['relt'].get('levels_left_out', [])) or '-')" "$run.json")"
       echo "$scene,$seed,$secs,$c,$out,$COMMIT,$(date -u +%Y-%m-%d)" >> "$CSV"
       echo "relt_ladder: $scene seed $seed $secs s: rmse ${c%%,*} (left out: $out)"

@@ -43,8 +43,7 @@ group() {
     SEED="$seed" render_followed "$run" "$scene" "$secs" "$snap" --integrator "$config"
     if ((curves)); then curve "$run" "$ref" "$config" && cat "$run.csv" >> "$curve_csv"; fi
     local c
-    c="$("$BUILD_DIR/relt" compare "$run.exr" "$ref" | /usr/bin/python3 -c \
-      "import json,sys; c=json.load(sys.stdin); print('%.6g,%.6g,%.6g,%.6g' % (c['rmse'], c['rel_mse'], c['mean'], c['reference_mean']))")"
+    c="$(compare_row "$run.exr" "$ref")"
     rows+=("$scene,$config,$seed,$secs,$c,$COMMIT,$(date -u +%Y-%m-%d)")
     echo "$config,${c%%,*},$(echo "$c" | cut -d, -f2),$run.png" >> "$finals"
     echo "suite: $scene $config seed $seed ${secs} s: rmse ${c%%,*}"

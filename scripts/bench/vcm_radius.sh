@@ -8,6 +8,7 @@
 # Usage: scripts/bench/vcm_radius.sh [SCENE...]   env: RADII ("0.5 1 2 4"), SEEDS ("1 2"), SECONDS_BUDGET (30)
 set -euo pipefail
 source "$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/setup.sh"
+source "$ROOT/scripts/bench/common.sh"
 read -r -a RADII <<< "${RADII:-0.5 1 2 4}"
 read -r -a SEED_LIST <<< "${SEEDS:-1 2}"
 BUDGET="${SECONDS_BUDGET:-30}"
@@ -24,8 +25,7 @@ for scene in "${SCENES[@]}"; do
       run="$OUT/$scene-r$radius-s$seed"
       "${MPIRUN[@]}" -np 2 "$BUILD_DIR/relt" render "$ROOT/scenes/$scene.gltf" -o "$run.exr" --time "$BUDGET" \
         --seed "$seed" --integrator vcm --vcm-radius "$radius" 2>/dev/null
-      c="$("$BUILD_DIR/relt" compare "$run.exr" "$ROOT/scenes/references/$scene.exr" | /usr/bin/python3 -c \
-        "import json,sys; c=json.load(sys.stdin); print('%.6g,%.6g,%.6g,%.6g' % (c['rmse'], c['rel_mse'], c['mean'], c['reference_mean']))")"
+      c="$(compare_row "$run.exr" "$ROOT/scenes/references/$scene.exr")"
       # A render again replaces its old row, so the table is over the latest reference and code.
       sed -i "/^$scene,$radius,$seed,$BUDGET,/d" "$CSV"
       echo "$scene,$radius,$seed,$BUDGET,$c,$COMMIT" | tee -a "$CSV"

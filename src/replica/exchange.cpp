@@ -80,8 +80,8 @@ struct Assignment {
 };
 
 // Importance-sampled swap for level i (thesis Eq. 5.9-5.11): partner k with probability
-// proportional to Q(i,k) Q(k,i), the normalised targets (k = i included), accepted with min(1, Z / Z') where Z' is the same
-// sum after the swap.
+// proportional to Q(i,k) Q(k,i) of the normalised targets (k = i included), accepted with
+// min(1, Z / Z') where Z' is the same sum after the swap.
 void importanceSwap(Assignment& a, int i, Rng& rng, ExchangeTally* tally) {
   const int m = a.q.levels();
   auto partnerMass = [&](int k) { return a.q(i, k) * a.q(k, i); };

@@ -200,11 +200,9 @@ void bootstrapPool(std::optional<ReplicaPool>& pool, PerWorker<PssEvaluator>& ev
     std::string names;
     for (const std::string& n : idle) names += (names.empty() ? "" : ", ") + n;
     std::fprintf(stderr,
-                 "relt: warning: level%s %s left out of the ladder: the bootstrap found nothing for %s to "
-                 "do (a target of 0, or no path of the classes %s estimate%s); the levels that remain estimate "
-                 "those classes\n",
-                 idle.size() > 1 ? "s" : "", names.c_str(), idle.size() > 1 ? "them" : "it",
-                 idle.size() > 1 ? "they" : "it", idle.size() > 1 ? "" : "s");
+                 "relt: warning: left out of the ladder: %s (the bootstrap found nothing to do there: a target "
+                 "of 0, or no path of the classes estimated there); the levels that remain estimate those classes\n",
+                 names.c_str());
   }
 }
 
