@@ -66,12 +66,15 @@ void MebCameras::trace(const VcmTracer& tracer, uint64_t seed, uint64_t iteratio
   }
   // In pixel order, not the workers': the grid then lists neighbours in the same order on any
   // split, so a light subpath's merges add up the same and the chains take the same decisions.
-  vertices_.clear();
+  std::vector<const CameraVertex*> inPixelOrder;
   for (const std::span<const CameraVertex>& path : paths_)
-    for (const CameraVertex& v : path) vertices_.push_back(&v);
-  positions_.resize(vertices_.size());
-  for (size_t i = 0; i < vertices_.size(); ++i) positions_[i] = vertices_[i]->sp.p;
+    for (const CameraVertex& v : path) inPixelOrder.push_back(&v);
+  positions_.resize(inPixelOrder.size());
+  for (size_t i = 0; i < inPixelOrder.size(); ++i) positions_[i] = inPixelOrder[i]->sp.p;
   grid_.build(positions_, radius);
+  bySlot_.resize(inPixelOrder.size());
+  const std::span<const uint32_t> order = grid_.order();
+  for (size_t slot = 0; slot < order.size(); ++slot) bySlot_[slot] = *inPixelOrder[order[slot]];
 }
 
 void MebCameras::splatOwnTechniques(float kappaTerm, std::span<Film> films) const {

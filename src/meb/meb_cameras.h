@@ -42,10 +42,11 @@ class MebCameras {
   uint32_t subpaths() const { return uint32_t(films_.size()); }
   std::span<const CameraVertex> subpath(uint32_t pixel) const { return paths_[pixel]; }
   const Vec2& film(uint32_t pixel) const { return films_[pixel]; }
-  // Every stored vertex, in the order the grid indexes them.
-  std::span<const CameraVertex* const> vertices() const { return vertices_; }
+  // Every stored vertex, copied in the grid's slot order: a light vertex's merges read their
+  // camera vertices side by side (chasing them into the per-worker blocks cost more than merging).
+  std::span<const CameraVertex> vertices() const { return bySlot_; }
   const HashGrid& grid() const { return grid_; }
-  uint64_t vertexCount() const { return vertices_.size(); }
+  uint64_t vertexCount() const { return bySlot_.size(); }
 
  private:
   int width_, height_, workers_;
@@ -53,8 +54,8 @@ class MebCameras {
   std::vector<std::vector<DeferredSplat>> workerDeferred_;
   std::vector<std::span<const CameraVertex>> paths_;  // by pixel
   std::vector<Vec2> films_;                           // by pixel
-  std::vector<const CameraVertex*> vertices_;
-  std::vector<Vec3> positions_;
+  std::vector<Vec3> positions_;  // in pixel order, for the grid
+  std::vector<CameraVertex> bySlot_;
   HashGrid grid_;
 };
 

@@ -37,9 +37,9 @@ void MebLightPath::connect(const LightVertex& y, uint32_t pixel, PathSample& out
 void MebLightPath::merge(const LightVertex& y, PathSample& out) {
   const int maxDepth = ctx_.settings.maxDepth;
   const float normalisation = float(tracer_.mis().mergeNormalisation());
-  const auto all = cameras_.vertices();
-  cameras_.grid().forEachNear(y.sp.p, [&](uint32_t i) {
-    const CameraVertex& x = *all[i];
+  const std::span<const CameraVertex> all = cameras_.vertices();
+  cameras_.grid().forEachSlotNear(y.sp.p, [&](uint32_t slot) {
+    const CameraVertex& x = all[slot];
     if (y.length + x.state.length > maxDepth) return;
     ++merges_;
     const Bsdf bsdf(ctx_.scene.materials[x.sp.material], x.sp.ns, x.sp.ng);

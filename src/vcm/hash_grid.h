@@ -21,6 +21,12 @@ class HashGrid {
   // particular order but the same for the same points and p.
   template <class Found>
   void forEachNear(const Vec3& p, Found&& found) const {
+    forEachSlotNear(p, [&](uint32_t slot) { found(order_[slot]); });
+  }
+  // The same, naming each point by its slot: its place in bucket order. A caller that keeps its
+  // points' data in slot order (order()) reads neighbours side by side instead of chasing them.
+  template <class Found>
+  void forEachSlotNear(const Vec3& p, Found&& found) const {
     if (sorted_.empty()) return;
     const Vec3 cell = (p - lo_) * inverseCell_;
     const Vec3 base = glm::floor(cell);
@@ -35,10 +41,12 @@ class HashGrid {
       if (std::find(seen, seen + k, bucket) != seen + k) continue;  // two cells hashed alike: once
       for (uint32_t i = start_[bucket]; i < start_[bucket + 1]; ++i) {
         const Vec3 d = sorted_[i] - p;  // most candidates are farther: scanned in a row
-        if (glm::dot(d, d) <= radius2_) found(order_[i]);
+        if (glm::dot(d, d) <= radius2_) found(i);
       }
     }
   }
+  // order()[slot]: the index in `points` of the point in that slot.
+  std::span<const uint32_t> order() const { return order_; }
 
  private:
   uint32_t bucketOf(int64_t x, int64_t y, int64_t z) const {

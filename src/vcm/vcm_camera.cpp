@@ -7,7 +7,7 @@
 namespace relt {
 
 void VcmTracer::traceCameraPath(const Vec2& film, SampleSource& u, std::span<const LightVertex> own,
-                                std::span<const LightVertex* const> all, const HashGrid* grid,
+                                std::span<const LightVertex> bySlot, const HashGrid* grid,
                                 PathSample& out) const {
   const int maxDepth = ctx_.settings.maxDepth;
   const auto onEmitter = [&](const VcmSubpath& s, const SurfacePoint& hit, const Vec3& wo, const Color& le) {
@@ -21,7 +21,7 @@ void VcmTracer::traceCameraPath(const Vec2& film, SampleSource& u, std::span<con
       for (const LightVertex& y : own)
         if (y.length + s.length + 1 <= maxDepth) sum += connect(s, hit, wo, bsdf, y);
     }
-    if (mis_.merges() && grid) sum += merge(s, hit, wo, bsdf, all, *grid);
+    if (mis_.merges() && grid) sum += merge(s, hit, wo, bsdf, bySlot, *grid);
     out.add(film, sum, PathClass::L5);
     return mis_.mode() != VcmMode::Ppm;  // merging only: merged at its first non-specular vertex
   };
@@ -68,11 +68,11 @@ Color VcmTracer::connect(const VcmSubpath& s, const SurfacePoint& x, const Vec3&
 
 // Vertex merging: the light vertices within r of x, as if x's subpath had reached each of them.
 Color VcmTracer::merge(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf,
-                       std::span<const LightVertex* const> all, const HashGrid& grid) const {
+                       std::span<const LightVertex> bySlot, const HashGrid& grid) const {
   Color sum(0.0f);
   uint64_t merged = 0;
-  grid.forEachNear(x.p, [&](uint32_t i) {
-    const LightVertex& y = *all[i];
+  grid.forEachSlotNear(x.p, [&](uint32_t slot) {
+    const LightVertex& y = bySlot[slot];
     if (y.length + s.length > ctx_.settings.maxDepth) return;
     ++merged;
     sum += mergeOne(s, wo, bsdf, y);

@@ -59,21 +59,17 @@ void VcmRenderer::render(uint64_t iteration, Film& film) {
   const VcmTracer tracer(ctx_, it, &merges_);
   traceLightPaths(tracer, iteration);
   const bool merging = settings_.mode != VcmMode::Bpt && it.radius > 0.0f;
-  if (merging) {
-    positions_.resize(vertices_.size());
-    for (size_t i = 0; i < vertices_.size(); ++i) positions_[i] = vertices_[i]->sp.p;
-    grid_.build(positions_, it.radius);
-  }
+  if (merging) indexForMerging(it.radius);
   traceCameraPaths(tracer, iteration, merging ? &grid_ : nullptr);
   for (Film& f : workerFilms_) {  // in worker order
     film.addWeighted(f, 1.0);
     f.clear();
   }
-  lightVertices_ += vertices_.size();
+  lightVertices_ += positions_.size();
 }
 
-// Worker w traces a contiguous block of the light subpaths into its own store; the blocks are then
-// indexed in order (not copied: at 1024x1024 they hold millions of vertices).
+// Worker w traces a contiguous block of the light subpaths into its own store; the connections
+// find a subpath's vertices there, through spans in subpath order.
 void VcmRenderer::traceLightPaths(const VcmTracer& tracer, uint64_t iteration) {
   const uint32_t paths = uint32_t(width_) * uint32_t(height_);
   std::vector<std::vector<uint32_t>> starts(static_cast<size_t>(workers_));
@@ -91,14 +87,29 @@ void VcmRenderer::traceLightPaths(const VcmTracer& tracer, uint64_t iteration) {
       workerFilms_[size_t(w)].addSample(splats);
     }
   });
-  vertices_.clear();
+  positions_.clear();
   paths_.clear();
   for (int w = 0; w < workers_; ++w) {
     const std::vector<LightVertex>& block = workerVertices_[size_t(w)];
     const std::vector<uint32_t>& start = starts[size_t(w)];
     for (size_t j = 0; j < start.size(); ++j)
       paths_.emplace_back(block.data() + start[j], (j + 1 < start.size() ? start[j + 1] : block.size()) - start[j]);
-    for (const LightVertex& v : block) vertices_.push_back(&v);
+    for (const LightVertex& v : block) positions_.push_back(v.sp.p);
+  }
+}
+
+// The grid over the light vertices, and the vertices copied in its slot order: a camera vertex's
+// merges then read their light vertices side by side (chasing each into the workers' blocks took
+// most of merging's time).
+void VcmRenderer::indexForMerging(float radius) {
+  grid_.build(positions_, radius);
+  std::vector<size_t> firstOf(size_t(workers_) + 1, 0);  // the index of each block's first vertex
+  for (int k = 0; k < workers_; ++k) firstOf[size_t(k) + 1] = firstOf[size_t(k)] + workerVertices_[size_t(k)].size();
+  bySlot_.clear();
+  bySlot_.reserve(positions_.size());
+  for (uint32_t i : grid_.order()) {
+    const size_t block = size_t(std::upper_bound(firstOf.begin(), firstOf.end(), size_t(i)) - firstOf.begin()) - 1;
+    bySlot_.push_back(workerVertices_[block][i - firstOf[block]]);
   }
 }
 
@@ -117,7 +128,7 @@ void VcmRenderer::traceCameraPaths(const VcmTracer& tracer, uint64_t iteration, 
         const uint32_t sx = shift.nextU32(), sy = shift.nextU32();
         const Vec2 film = positionInPixel(x, row, shiftedSobol02(uint32_t(iteration), sx, sy));
         sample.clear();
-        tracer.traceCameraPath(film, u, paths_[pixel], vertices_, grid, sample);
+        tracer.traceCameraPath(film, u, paths_[pixel], bySlot_, grid, sample);
         workerFilms_[size_t(w)].addSample(sample);
       }
     }

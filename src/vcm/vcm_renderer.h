@@ -44,6 +44,7 @@ class VcmRenderer {
 
  private:
   void traceLightPaths(const VcmTracer& tracer, uint64_t iteration);
+  void indexForMerging(float radius);
   void traceCameraPaths(const VcmTracer& tracer, uint64_t iteration, const HashGrid* grid);
 
   const PathContext& ctx_;
@@ -53,8 +54,8 @@ class VcmRenderer {
   double radius1_;
   std::vector<std::vector<LightVertex>> workerVertices_;  // worker w's block of light subpaths, kept there
   std::vector<std::span<const LightVertex>> paths_;       // light subpath j's vertices
-  std::vector<const LightVertex*> vertices_;              // every light vertex of the iteration, by path
-  std::vector<Vec3> positions_;                           // theirs, which the grid indexes
+  std::vector<Vec3> positions_;                           // every light vertex's, by path: the grid's input
+  std::vector<LightVertex> bySlot_;                       // the light vertices again, in the grid's slot order
   std::vector<Film> workerFilms_;
   HashGrid grid_;
   uint64_t lightVertices_ = 0;

@@ -30,10 +30,10 @@ class VcmTracer {
   // splats to `splats`.
   void traceLightPath(SampleSource& u, std::vector<LightVertex>& store, PathSample& splats) const;
   // Traces the camera subpath through `film` (pixels): its contributions go to `out`. It connects
-  // to `own` (the vertices of one light subpath) and merges with the vertices `grid` indexes in
-  // `all` (null grid: no merging).
+  // to `own` (the vertices of one light subpath) and merges with the vertices `grid` indexes,
+  // `bySlot` holding them in the grid's slot order (null grid: no merging).
   void traceCameraPath(const Vec2& film, SampleSource& u, std::span<const LightVertex> own,
-                       std::span<const LightVertex* const> all, const HashGrid* grid, PathSample& out) const;
+                       std::span<const LightVertex> bySlot, const HashGrid* grid, PathSample& out) const;
 
   // The camera subpath through `film`, vertex by vertex: onEmitter(s, hit, wo, le) where it finds
   // emission le, onSurface(s, hit, wo, bsdf) at every non-specular vertex (false: the subpath ends
@@ -60,7 +60,7 @@ class VcmTracer {
                SampleStream stream, VcmSubpath& s) const;
   void connectToCamera(const LightVertex& y, const Bsdf& bsdf, PathSample& splats) const;
   Color merge(const VcmSubpath& s, const SurfacePoint& x, const Vec3& wo, const Bsdf& bsdf,
-              std::span<const LightVertex* const> all, const HashGrid& grid) const;
+              std::span<const LightVertex> bySlot, const HashGrid& grid) const;
 
   const PathContext& ctx_;
   VcmMis mis_;

@@ -46,3 +46,19 @@ TEST(HashGrid, AnEmptyGridFindsNothing) {
   grid.forEachNear(Vec3(0.0f), [&](uint32_t) { ++found; });
   EXPECT_EQ(found, 0);
 }
+
+TEST(HashGrid, SlotsNameThePointsInBucketOrder) {
+  const std::vector<Vec3> points = randomPoints(2000, 5, 1.0f);
+  HashGrid grid;
+  grid.build(points, 0.05f);
+  const std::span<const uint32_t> order = grid.order();
+  std::vector<uint32_t> all(order.begin(), order.end());
+  std::sort(all.begin(), all.end());
+  for (uint32_t i = 0; i < all.size(); ++i) ASSERT_EQ(all[i], i) << "order() must be a permutation";
+  for (const Vec3& q : randomPoints(100, 9, 1.0f)) {
+    std::vector<uint32_t> byIndex, bySlot;
+    grid.forEachNear(q, [&](uint32_t i) { byIndex.push_back(i); });
+    grid.forEachSlotNear(q, [&](uint32_t slot) { bySlot.push_back(order[slot]); });
+    EXPECT_EQ(bySlot, byIndex);  // the same points, in the same order
+  }
+}
