@@ -228,12 +228,12 @@ struct StoppedInAPass {
 
 // Renders `scene` with `args` (4 passes) and a checkpoint in DIR/ck and stops it by SIGTERM at
 // its first progress line past 25 % (a pass done, so the image is not black); a stop can fall
-// between passes (one chunk in several ends one), so it is tried up to three times until one
-// falls inside a pass.
+// between passes (one chunk in several ends one), so it is tried up to five times until one
+// falls inside a pass (a pass of about a second is some ten chunks of kPassChunkSeconds).
 StoppedInAPass stopInsideAPass(const std::string& dir, const std::string& scene, const std::string& args) {
   const std::string ck = dir + "/ck", out = dir + "/stopped.exr", stats = dir + "/stopped.json";
   StoppedInAPass s;
-  for (int attempt = 0; attempt < 3 && s.rows == 0; ++attempt) {
+  for (int attempt = 0; attempt < 5 && s.rows == 0; ++attempt) {
     std::filesystem::remove_all(ck);
     const SignalledRun run = runAndSignal(mpirun(2) + reltBinary() + " render " + sourcePath("scenes/" + scene + ".gltf") +
                                               " -o " + out + args + "--checkpoint " + ck + " --stats " + stats,
@@ -273,8 +273,10 @@ void expectSameRows(const Image& a, const Image& b, int first, int end) {
 // those of a render of the passes done; bdpt's light paths and erpt's chains splat outside their
 // row, so their image is exactly that of a render of the passes done (render/pass_film.h). A pass
 // lasts about a second on 2 ranks (pt in the furnace, whose paths are long; a larger film would
-// take longer to write than mpirun waits), erpt with its proposal filter (a tally per pixel; at
-// 96x72 its render could end in 1.6 s, before a stop sent at the first progress line took effect).
+// take longer to write than mpirun waits), erpt's 1.7 s, with its proposal filter (a tally per
+// pixel; at 96x72 its render could end in 1.6 s, before a stop sent at the first progress line took
+// effect, about a second later; at 144x108 a pass of 0.75 s was few enough chunks that three stops
+// in a row fell between passes).
 TEST(Checkpoint, AStopInsideAPassResumesToTheUninterruptedImage) {
   struct Case {
     std::string integrator, scene;
@@ -284,7 +286,7 @@ TEST(Checkpoint, AStopInsideAPassResumesToTheUninterruptedImage) {
   };
   for (const Case& c : {Case{"bdpt", "cornell-box", 1024, 768, "", {2, 1}},
                         Case{"pt", "furnace", 1024, 768, "--max-depth 256 ", {2}},
-                        Case{"erpt", "cornell-box", 144, 108, "--erpt-proposal-filter ", {2, 1}}}) {
+                        Case{"erpt", "cornell-box", 216, 162, "--erpt-proposal-filter ", {2, 1}}}) {
     SCOPED_TRACE(c.integrator);
     const std::string dir = makeTempDir("checkpoint-inside-a-pass-" + c.integrator);
     const std::string common = " --integrator " + c.integrator + " --width " + std::to_string(c.width) + " --height " +
