@@ -72,9 +72,7 @@ void MebCameras::trace(const VcmTracer& tracer, uint64_t seed, uint64_t iteratio
   positions_.resize(inPixelOrder.size());
   for (size_t i = 0; i < inPixelOrder.size(); ++i) positions_[i] = inPixelOrder[i]->sp.p;
   grid_.build(positions_, radius);
-  bySlot_.resize(inPixelOrder.size());
-  const std::span<const uint32_t> order = grid_.order();
-  for (size_t slot = 0; slot < order.size(); ++slot) bySlot_[slot] = *inPixelOrder[order[slot]];
+  grid_.gatherBySlot<CameraVertex>(inPixelOrder, bySlot_);
 }
 
 void MebCameras::splatOwnTechniques(float kappaTerm, std::span<Film> films) const {

@@ -47,6 +47,13 @@ class HashGrid {
   }
   // order()[slot]: the index in `points` of the point in that slot.
   std::span<const uint32_t> order() const { return order_; }
+  // The items of the indexed points (items[i] is point i's) copied into slot order, for
+  // forEachSlotNear's callers.
+  template <class T>
+  void gatherBySlot(std::span<const T* const> items, std::vector<T>& bySlot) const {
+    bySlot.resize(order_.size());
+    for (size_t slot = 0; slot < order_.size(); ++slot) bySlot[slot] = *items[order_[slot]];
+  }
 
  private:
   uint32_t bucketOf(int64_t x, int64_t y, int64_t z) const {

@@ -103,14 +103,11 @@ void VcmRenderer::traceLightPaths(const VcmTracer& tracer, uint64_t iteration) {
 // most of merging's time).
 void VcmRenderer::indexForMerging(float radius) {
   grid_.build(positions_, radius);
-  std::vector<size_t> firstOf(size_t(workers_) + 1, 0);  // the index of each block's first vertex
-  for (int k = 0; k < workers_; ++k) firstOf[size_t(k) + 1] = firstOf[size_t(k)] + workerVertices_[size_t(k)].size();
-  bySlot_.clear();
-  bySlot_.reserve(positions_.size());
-  for (uint32_t i : grid_.order()) {
-    const size_t block = size_t(std::upper_bound(firstOf.begin(), firstOf.end(), size_t(i)) - firstOf.begin()) - 1;
-    bySlot_.push_back(workerVertices_[block][i - firstOf[block]]);
-  }
+  std::vector<const LightVertex*> vertices;  // in positions_' order: block after block
+  vertices.reserve(positions_.size());
+  for (const std::vector<LightVertex>& block : workerVertices_)
+    for (const LightVertex& v : block) vertices.push_back(&v);
+  grid_.gatherBySlot<LightVertex>(vertices, bySlot_);
 }
 
 // Rows dealt to the workers in turn; pixel p's camera subpath connects to light subpath p. Its

@@ -62,3 +62,18 @@ TEST(HashGrid, SlotsNameThePointsInBucketOrder) {
     EXPECT_EQ(bySlot, byIndex);  // the same points, in the same order
   }
 }
+
+// gatherBySlot puts each point's item in that point's slot: a neighbour found by slot is its item.
+TEST(HashGrid, GatheredItemsSitInTheirPointsSlots) {
+  const std::vector<Vec3> points = randomPoints(500, 3, 1.0f);
+  HashGrid grid;
+  grid.build(points, 0.1f);
+  std::vector<const Vec3*> items;
+  for (const Vec3& p : points) items.push_back(&p);
+  std::vector<Vec3> bySlot;
+  grid.gatherBySlot<Vec3>(items, bySlot);
+  ASSERT_EQ(bySlot.size(), points.size());
+  for (const Vec3& q : randomPoints(50, 4, 1.0f))
+    grid.forEachSlotNear(q, [&](uint32_t slot) { EXPECT_LE(glm::length(bySlot[slot] - q), 0.1f); });
+  for (size_t slot = 0; slot < bySlot.size(); ++slot) EXPECT_EQ(bySlot[slot], points[grid.order()[slot]]);
+}
