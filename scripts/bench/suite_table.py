@@ -2,8 +2,9 @@
 """The equal-time suite table (docs/img/suite.md) from suite.sh's rows (docs/img/suite.csv).
 
 Per scene and length: each configuration's RMSE against the reference as the root of its mean
-squared error over the seeds (each seed's in brackets), and vcm's efficiency (MSE x time at equal
-time) over bdpt and over the better of pssmlt and relt, from those mean squared errors. Where the
+squared error over the seeds (each seed's in brackets), and the efficiency (MSE x time at equal
+time) of vcm over bdpt and over the better of pssmlt and relt, and of meb over vcm and over the best
+of bdpt, pssmlt, mmlt and relt (where those rows exist), from those mean squared errors. Where the
 reference's JSON states its own error (reference_rmse_estimate), the efficiencies are also given with
 that error's square taken out of every MSE (a reference's noise adds to every render's MSE alike and
 so pulls every ratio towards 1).
@@ -28,15 +29,20 @@ def reference_mse(scene):
     return estimate * estimate if estimate else None
 
 
+# (subject, the configurations it is measured against: their best) per efficiency column.
+COLUMNS = [("vcm", ["bdpt"]), ("vcm", ["pssmlt", "relt"]), ("meb", ["vcm"]), ("meb", ["bdpt", "pssmlt", "mmlt", "relt"])]
+
+
 def efficiencies(mse, ref_mse):
-    """vcm over bdpt and over the better of pssmlt, relt; ref_mse is taken out of each MSE first."""
-    vcm = mse.get("vcm")
-    if not vcm or vcm <= ref_mse:
-        return ["-", "-"]
+    """Each column's subject over the best of its others (MSE ratio at equal time); ref_mse is taken
+    out of each MSE first."""
     own = {c: m - ref_mse for c, m in mse.items()}
-    bdpt = "%.2f" % (own["bdpt"] / own["vcm"]) if "bdpt" in own else "-"
-    chains = [own[c] for c in ("pssmlt", "relt") if c in own]
-    return [bdpt, "%.2f" % (min(chains) / own["vcm"]) if chains else "-"]
+    cells = []
+    for subject, others in COLUMNS:
+        best = [own[c] for c in others if c in own]
+        ok = subject in own and own[subject] > 0.0 and best
+        cells.append("%.2f" % (min(best) / own[subject]) if ok else "-")
+    return cells
 
 
 def mean_square(values):
@@ -53,8 +59,8 @@ def main(csv_path, out_path):
         configs[r["configuration"]] = True
         commits.add(r["commit"])
     configs = list(configs)
-    head = ["scene", "seconds"] + configs + ["vcm over bdpt", "vcm over best of pssmlt, relt",
-                                             "reference's RMSE", "the same, its MSE taken out"]
+    head = ["scene", "seconds"] + configs + ["%s over %s" % (s, " / ".join(o) if len(o) == 1 else "best of " + ", ".join(o))
+                                             for s, o in COLUMNS] + ["reference's RMSE", "the same, its MSE taken out"]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for scene in scenes:
         ref_mse = reference_mse(scene)
