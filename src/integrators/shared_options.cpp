@@ -29,10 +29,10 @@ void addSharedOptions(CLI::App& cmd, RenderSettings& r) {
   cmd.add_option_function<std::string>(
          "--direct-emission-spp",
          [&r](const std::string& text) { r.directSpp = text == "auto" ? kDirectSppAuto : std::stoi(text); },
-         "pssmlt, relt: estimate the directly seen emission apart with N camera rays per pixel (a shifted "
-         "(0,2)-sequence: powers of two are best) and leave the chains the longer paths (0: the chains do it all; "
-         "auto: about 6 % of the budget, 2 x mutations per pixel rounded to a power of two, none when no emitter "
-         "is in view)")
+         "pssmlt, relt, vcm, meb: estimate the emission seen directly or through specular surfaces only apart "
+         "with N camera rays per pixel (a shifted (0,2)-sequence: powers of two are best) and leave the rest to the "
+         "integrator (0: it does it all; auto: about 6 % of the budget, or 2 x mutations or samples per pixel "
+         "rounded to a power of two, none when no such emission is in view)")
       ->check(CLI::IsMember({"auto"}) | CLI::Range(0, kDirectMaxSpp))
       ->default_str("auto");
   cmd.add_option("--trace", r.trace,
@@ -63,6 +63,10 @@ void addChainSettingsJson(const RenderSettings& s, nlohmann::json& j) {
   j["large_step_probability"] = shortestDecimal(s.largeStepProbability);
   j["small_step"] = smallStepJson(s);
   if (s.snapshotEvery > 0.0) j["snapshot_every"] = s.snapshotEvery;
+  addDirectSettingsJson(s, j);
+}
+
+void addDirectSettingsJson(const RenderSettings& s, nlohmann::json& j) {
   if (directEmissionApart(s))
     j["direct_emission_spp"] = s.directSpp == kDirectSppAuto ? nlohmann::json("auto") : nlohmann::json(s.directSpp);
 }

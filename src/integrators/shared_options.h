@@ -19,6 +19,8 @@ void validateSharedOptions(const RenderSettings& settings);
 // stats.json's settings of a Markov-chain integrator (pssmlt, mmlt, relt): its budget, the
 // mutation's settings, snapshots and the direct-emission pass.
 void addChainSettingsJson(const RenderSettings& settings, nlohmann::json& j);
+// The direct-emission pass's --direct-emission-spp, when it is apart (pssmlt, relt, vcm, meb).
+void addDirectSettingsJson(const RenderSettings& settings, nlohmann::json& j);
 // The Kelemen sizes as given.
 nlohmann::json smallStepJson(const RenderSettings& settings);
 

@@ -140,15 +140,22 @@ void Bdpt::trace(const Vec2& film, SampleSource& source, PathSample& out) {
   generateCameraSubpath(film, source, static_cast<size_t>(ctx_.settings.maxDepth) + 1);
   generateLightSubpath(source, static_cast<size_t>(ctx_.settings.maxDepth));
   if (hook_ != nullptr) hook_->beginPath();
-  const int maxDepth = ctx_.settings.maxDepth, minDepth = std::max(1, ctx_.settings.minDepth);
+  const int maxDepth = ctx_.settings.maxDepth;
+  // Emission found at camera vertex t - 1 after specular vertices only (t <= firstSmooth + 1) is
+  // left to the pass apart, when it is.
+  const int leftOut = ctx_.settings.specularChainsApart ? firstSmoothCameraVertex() + 1 : 1;
   for (int t = 1; t <= static_cast<int>(camera_.size()); ++t)
     for (int s = 0; s <= static_cast<int>(light_.size()); ++s) {
-      const int segments = s + t - 1;
-      // (1,1) would need the light vertex itself to be seen by the pinhole; (0,2) covers it. All
-      // strategies of a length are kept or left out together, so the MIS weights still sum to 1.
-      if (segments < minDepth || segments > maxDepth || (s == 1 && t == 1)) continue;
+      // (1,1) would need the light vertex itself to be seen by the pinhole; (0,2) covers it.
+      if (s + t - 1 > maxDepth || (s == 1 && t == 1) || (s == 0 && t <= leftOut)) continue;
       connect(s, t, film, source, out);
     }
+}
+
+int Bdpt::firstSmoothCameraVertex() const {
+  int k = 1;
+  while (k < static_cast<int>(camera_.size()) && camera_[size_t(k)].isSurface() && camera_[size_t(k)].delta) ++k;
+  return k;
 }
 
 bool Bdpt::traceStrategy(int s, int t, const Vec2& film, SampleSource& source, PathSample& out) {

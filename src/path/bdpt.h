@@ -48,6 +48,9 @@ class Bdpt {
   void generateCameraSubpath(const Vec2& film, SampleSource& source, size_t maxVertices);
   void generateLightSubpath(SampleSource& source, size_t maxVertices);
   void connect(int s, int t, const Vec2& film, SampleSource& source, PathSample& out);
+  // The camera subpath's first vertex after the camera that is not a specular surface (its size
+  // when there is none).
+  int firstSmoothCameraVertex() const;
 
   const PathContext& ctx_;
   bool roulette_ = true;

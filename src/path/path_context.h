@@ -20,8 +20,11 @@ inline std::optional<MisHeuristic> parseMisHeuristic(std::string_view name) {
 
 struct PathSettings {
   int maxDepth = 8;  // maximum number of path segments
-  // BDPT: paths with fewer segments are left out (2: the directly seen emission is estimated apart).
-  int minDepth = 1;
+  // Paths camera - specular (delta) vertices - emitter, the directly seen emission among them, are
+  // left out: a pass apart estimates them (render/direct_pass.h). Only emission found by the camera
+  // subpath makes such a path (no connection or merge can touch a delta vertex), so leaving them
+  // out changes no other path's weight.
+  bool specularChainsApart = false;
   MisHeuristic heuristic = MisHeuristic::Power;
   int rrDepth = 2;   // path tracing: Russian roulette from this many segments on (pbrt-v4 convention)
 };

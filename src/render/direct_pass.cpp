@@ -54,6 +54,13 @@ bool probeSeesEmission(Renderer& renderer, Job& job) {
 
 }  // namespace
 
+int fixedDirectSpp(const RenderSettings& s) {
+  if (s.directSpp != kDirectSppAuto) return s.directSpp;
+  if (s.seconds) return 0;
+  // vcm and meb count iterations (--spp), the chains mutations per pixel; both default to 16.
+  return autoDirectSpp(s.spp ? double(*s.spp) : s.mutationsPerPixel.value_or(kDefaultMutationsPerPixel));
+}
+
 DirectPass renderDirectPass(Renderer& renderer, Job& job, Film& film, const DirectPassStart& start,
                             const DirectChunkDone& chunkDone) {
   const RenderSettings& s = renderer.settings();
@@ -62,7 +69,7 @@ DirectPass renderDirectPass(Renderer& renderer, Job& job, Film& film, const Dire
   ChunkedPass pass{renderer, job, film, chunkDone, start.seconds, Clock::now()};
   pass.done = uint32_t(start.spp);
   const bool automatic = s.directSpp == kDirectSppAuto;
-  const int fixed = !automatic ? s.directSpp : s.seconds ? 0 : autoDirectSpp(s.mutationsPerPixel.value_or(kDefaultMutationsPerPixel));
+  const int fixed = fixedDirectSpp(s);
   if (automatic && start.spp == 0 && !probeSeesEmission(renderer, job)) {  // none in view
     renderer.keepDirectEmissionInChains();
     out.seconds = pass.elapsed();

@@ -1,5 +1,6 @@
 #pragma once
-// The directly seen emission (paths of one segment) estimated apart from pssmlt's and relt's chains:
+// The emission seen directly or through specular surfaces only (camera - delta* - emitter paths,
+// path/specular_chain.h) estimated apart from pssmlt's, relt's, vcm's and meb's main estimators:
 // how many rays per pixel, and whether to keep the pass at all. The ranks share the rows (rank r of
 // P takes rows r, r + P, ...) and combine their values through the job's collectives, so every rank
 // takes the same decisions.
@@ -28,10 +29,15 @@ struct DirectPassStart {
   double seconds = 0.0;
 };
 
+// The rays per pixel a pass takes with no clock to follow: --direct-emission-spp N, or on auto
+// with a fixed budget autoDirectSpp of its iterations (vcm, meb) or mutations per pixel; 0 for a
+// timed auto pass (doublings while doubleDirectPass allows).
+int fixedDirectSpp(const RenderSettings& settings);
+
 // Renders the pass into `film` for this rank's rows and returns its size
 // (resolve with divisor spp). With --direct-emission-spp auto it first traces kDirectProbeSpp rays
 // per pixel on streams of their own and discards them; when none of any rank saw emission it hands
-// the paths of one segment back to the chains (Renderer::keepDirectEmissionInChains) and returns
+// those paths back to the main estimator (Renderer::keepDirectEmissionInChains) and returns
 // spp 0. Then it takes the given N, a fixed budget's autoDirectSpp, or for a timed render
 // kDirectMinSpp and then doublings while doubleDirectPass allows. Rays are taken in chunks of
 // every pixel of about kDirectChunkSeconds; between chunks the ranks agree on stop and save

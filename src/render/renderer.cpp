@@ -8,6 +8,7 @@
 #include "core/memory.h"
 #include "parallel/workers.h"
 #include "path/path_tracer.h"
+#include "path/specular_chain.h"
 #include "scene/scene_summary.h"
 
 namespace relt {
@@ -41,7 +42,7 @@ Renderer::Renderer(Scene scene, const RenderSettings& settings) : scene_(std::mo
   PathSettings ps;
   ps.maxDepth = settings_.maxDepth;
   ps.heuristic = settings_.heuristic;
-  if (directEmissionApart(settings_)) ps.minDepth = 2;  // renderDirect estimates the rest
+  ps.specularChainsApart = directEmissionApart(settings_);  // renderDirect estimates them
   ctx_ = std::make_unique<PathContext>(PathContext{scene_, *tracer_, *lights_, *camera_, ps, &subpathVertices_});
   for (int w = 0; w < std::max(settings_.threads, 1); ++w) workers_.push_back(std::make_unique<RowWorker>(*ctx_));
 }
@@ -84,15 +85,13 @@ void Renderer::renderRow(RowEstimator estimator, uint64_t sampleIndex, int row, 
 }
 
 void Renderer::keepDirectEmissionInChains() {
-  ctx_->settings.minDepth = 1;
+  ctx_->settings.specularChainsApart = false;
   settings_.directSpp = 0;
 }
 
 void Renderer::renderDirect(int firstRow, int rowStride, Film& film, uint32_t begin, uint32_t end, bool probe) {
   const uint64_t stream = probe ? kProbeStream : kDirectStream;
-  PathContext direct = *ctx_;
-  direct.settings.minDepth = 1;
-  direct.settings.maxDepth = 1;  // pt: the emission where the camera ray lands, nothing after it
+  const PathContext& direct = *ctx_;
   // The rank's rows are dealt to its workers (the i-th to worker i mod T), which add into the one
   // film: a pixel's samples all land in its own row, so each pixel's sum is made by one worker in
   // the order one worker would make it, and the image does not depend on the workers. A sample
@@ -123,7 +122,7 @@ uint64_t Renderer::renderDirectRow(const PathContext& direct, uint64_t stream, i
       source.reset(hashKey(settings_.seed, stream, pixel, static_cast<uint64_t>(k)));
       const Vec2 offset = shiftedSobol02(k, sx, sy);
       sample.clear();
-      tracePath(direct, positionInPixel(x, row, offset), source, sample);
+      traceSpecularChain(direct, positionInPixel(x, row, offset), source, sample);
       if (sample.finite())
         film.addSample(sample);
       else

@@ -34,14 +34,15 @@ class Renderer {
   // own random stream keyed by (seed, pixel, sample index). Worker threads of the rank
   // (settings().threads, parallel/workers.h) may render rows at once, each into a film of its own.
   void renderRow(RowEstimator estimator, uint64_t sampleIndex, int row, Film& film);
-  // The directly seen emission (paths of one segment) of rows firstRow, firstRow + rowStride, ...:
+  // The emission seen directly or through specular surfaces only (path/specular_chain.h) of rows
+  // firstRow, firstRow + rowStride, ...:
   // camera rays number begin .. end - 1 of every pixel, at the points of a shifted (0,2)-sequence,
   // on streams of their own; after rays 0 .. N - 1, resolve with divisor N (render/direct_pass.h
   // decides N). `probe` traces on streams apart again: rays that decide whether the pass runs
   // must not be part of its estimate. On the rank's worker threads; the film is the same for any
   // number of them.
   void renderDirect(int firstRow, int rowStride, Film& film, uint32_t begin, uint32_t end, bool probe = false);
-  // The direct pass found no emitter in view: the chains estimate the paths of one segment again.
+  // The direct pass found no emitter in view: the chains estimate those paths again.
   // Only before any chain has stepped.
   void keepDirectEmissionInChains();
 

@@ -23,7 +23,8 @@ struct RenderSettings;
 // Default-constructed it is the default integrator's (bdpt has no settings of its own).
 struct IntegratorKind {
   std::string name = kDefaultIntegrator;
-  // Can estimate the directly seen emission (paths of one segment) in a pass apart (directSpp).
+  // Can estimate the emission seen directly or through specular surfaces only (camera - delta* -
+  // emitter paths, path/specular_chain.h) in a pass apart (directSpp).
   bool directEmissionApart = false;
   // Adds its own settings to toJson's (stats.json, the EXR metadata, the checkpoints' identity).
   void (*settingsJson)(const RenderSettings& settings, nlohmann::json& j) = nullptr;
@@ -56,16 +57,16 @@ struct RenderSettings {
   float largeStepProbability = kDefaultLargeStepProbability;  // pssmlt, mmlt, relt
   float smallStepMin = KelemenSizes{}.s1, smallStepMax = KelemenSizes{}.s2;  // Kelemen small-step sizes
   double snapshotEvery = 0.0;  // Markov chains: write the image so far every this many seconds (0: never)
-  // pssmlt, relt: estimate the directly seen emission (paths of one segment) apart, with this many
-  // camera rays per pixel (a shifted (0,2)-sequence), and leave the chains the longer paths (0:
-  // chains do it all; kDirectSppAuto: sized from the budget, dropped when no emitter is in view,
-  // render/direct_pass.h).
+  // pssmlt, relt, vcm, meb: estimate the emission seen directly or through specular surfaces only
+  // apart, with this many camera rays per pixel (a shifted (0,2)-sequence), and leave the main
+  // estimator the other paths (0: it does them all; kDirectSppAuto: sized from the budget, dropped
+  // when no such emission is in view, render/direct_pass.h).
   int directSpp = kDirectSppAuto;
 
   nlohmann::json toJson() const;
 };
 
-// pssmlt and relt unless directSpp is 0: paths of one segment are estimated apart, not by the chains.
+// pssmlt, relt, vcm and meb unless directSpp is 0: camera - delta* - emitter paths are estimated apart.
 inline bool directEmissionApart(const RenderSettings& s) { return s.directSpp != 0 && s.integrator.directEmissionApart; }
 // A float setting as the number it was given as (0.3, not 0.30000001192092896): the shortest
 // decimal that reads back as the same float.

@@ -36,7 +36,7 @@ class VcmTracer {
                        std::span<const LightVertex> bySlot, const HashGrid* grid, PathSample& out) const;
 
   // The camera subpath through `film`, vertex by vertex: onEmitter(s, hit, wo, le) where it finds
-  // emission le, onSurface(s, hit, wo, bsdf) at every non-specular vertex (false: the subpath ends
+  // emission le (not after specular vertices only when the pass apart estimates those paths), onSurface(s, hit, wo, bsdf) at every non-specular vertex (false: the subpath ends
   // there). s is the subpath's state on arrival.
   template <class OnEmitter, class OnSurface>
   void walkCamera(const Vec2& film, SampleSource& u, OnEmitter&& onEmitter, OnSurface&& onSurface) const;
@@ -81,7 +81,8 @@ void VcmTracer::walkCamera(const Vec2& film, SampleSource& u, OnEmitter&& onEmit
     if (!advance(s, hit)) return;
     const Vec3 wo = -s.dir;  // the traced ray's, as bdpt samples with (path/vertex.h)
     const Color le = ctx_.lights.emitted(hit, wo);
-    if (!isBlack(le)) onEmitter(static_cast<const VcmSubpath&>(s), hit, wo, le);
+    // Found after specular vertices only, it may be the pass apart's (path/specular_chain.h).
+    if (!isBlack(le) && !(s.specular && ctx_.settings.specularChainsApart)) onEmitter(static_cast<const VcmSubpath&>(s), hit, wo, le);
     if (s.length >= maxDepth) return;
     const Bsdf bsdf(ctx_.scene.materials[hit.material], hit.ns, hit.ng);
     if (!bsdf.isDelta() && !onSurface(static_cast<const VcmSubpath&>(s), hit, wo, bsdf)) return;

@@ -311,15 +311,16 @@ TEST(Checkpoint, AStopInsideAPassResumesToTheUninterruptedImage) {
   }
 }
 
-// A stop during pssmlt's or relt's direct-emission pass (here a long one: 2^17 rays per pixel,
+// A stop during pssmlt's, relt's or vcm's direct-emission pass (here a long one: 2^17 rays per pixel,
 // about 8 s on 2 ranks) writes the image of the pass so far and a checkpoint of it, before any
-// chain starts; the resume goes on with the pass from there and then runs the chains: the image
+// chain or iteration starts; the resume goes on with the pass from there and then runs the chains: the image
 // of the render that never stopped (relt also on 3 ranks), and its checkpoints keep the pass (a
 // resume of the last one renders no ray of it again).
 TEST(Checkpoint, AStopInTheDirectEmissionPassResumesToTheUninterruptedImage) {
-  for (const std::string integrator : {"relt", "pssmlt"}) {
+  for (const std::string integrator : {"relt", "pssmlt", "vcm"}) {
     const std::string dir = makeTempDir("checkpoint-direct-" + integrator);
-    const std::string args = " --integrator " + integrator + " --width 40 --height 30 --seed 4 --mutations-per-pixel 4 "
+    const std::string budget = integrator == "vcm" ? "--spp 4 " : "--mutations-per-pixel 4 ";
+    const std::string args = " --integrator " + integrator + " --width 40 --height 30 --seed 4 " + budget +
                              "--direct-emission-spp 131072 ";
     render(2, "cornell-box", "-o " + dir + "/whole.exr" + args);
     const Image whole = readExr(dir + "/whole.exr");

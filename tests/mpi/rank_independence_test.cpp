@@ -139,12 +139,17 @@ TEST(RankIndependence, ReltPerLevelLayersSumToTheImage) {
       << "kitaoka's four levels less the specific one: cornell-box has no implicit path after a specular bounce";
 }
 
-// With the directly seen emission estimated apart (rows split over ranks), pssmlt and relt still
-// give the same image on one and two ranks, and relt's layers (levels plus "direct") sum to it.
+// With the emission seen directly or in specular surfaces estimated apart (rows split over ranks),
+// pssmlt, relt, vcm and meb still give the same image on one and two ranks (mirror-balls for vcm
+// and meb: emission in the mirrors), and relt's layers (levels plus "direct") sum to it.
 TEST(RankIndependence, DirectEmissionApartIsTheSameOnOneAndTwoRanks) {
   const std::string dir = makeTempDir("mpi-direct");
   const std::string pss = "--mutations-per-pixel 4 --chains 7 --direct-emission-spp 9";
   expectSameImage(renderWithRanks(1, "pssmlt", dir, pss), renderWithRanks(2, "pssmlt", dir, pss));
+  for (const std::string integrator : {"vcm", "meb"}) {
+    const std::string args = "--spp 3 --direct-emission-spp 9";
+    expectSameImage(renderWithRanks(1, integrator, dir, args, "mirror-balls"), renderWithRanks(2, integrator, dir, args, "mirror-balls"));
+  }
   const std::string relt = "--mutations-per-pixel 4 --ladders 2 --family kitaoka --per-level --direct-emission-spp 9";
   const Image one = renderWithRanks(1, "relt", dir, relt);
   const Image two = renderWithRanks(2, "relt", dir, relt);

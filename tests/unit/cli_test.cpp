@@ -58,7 +58,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadInvocation{"MutationsWithBdpt", "render " + kScene + " -o OUT --mutations-per-pixel 4", "pssmlt"},
                       BadInvocation{"ZeroChains", "render " + kScene + " -o OUT --integrator pssmlt --chains 0", "chains"},
                       BadInvocation{"ZeroChainLength", "render " + kScene + " -o OUT --integrator erpt --chain-length 0", "chain-length"},
-                      BadInvocation{"DirectEmissionWithMmlt", "render " + kScene + " -o OUT --integrator mmlt --direct-emission-spp 16", "--direct-emission-spp: only for --integrator pssmlt and relt"},
+                      BadInvocation{"DirectEmissionWithMmlt", "render " + kScene + " -o OUT --integrator mmlt --direct-emission-spp 16", "--direct-emission-spp: only for --integrator pssmlt, relt, vcm and meb"},
                       BadInvocation{"NegativeDirectEmissionSpp", "render " + kScene + " -o OUT --integrator pssmlt --direct-emission-spp -1", "direct-emission-spp"},
                       BadInvocation{"WordForDirectEmissionSpp", "render " + kScene + " -o OUT --integrator relt --direct-emission-spp often", "direct-emission-spp"},
                       BadInvocation{"SmallStepsOutOfOrder", "render " + kScene + " -o OUT --integrator pssmlt --small-step-min 0.1 --small-step-max 0.01", "small-step"},

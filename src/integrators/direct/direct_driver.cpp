@@ -60,9 +60,7 @@ struct PassSaver {
   void print(const DirectPass& sofar) {
     if (!job.isRoot() || sofar.seconds - lastPrint < 1.0) return;
     lastPrint = sofar.seconds;
-    const int target = settings.directSpp > 0 ? settings.directSpp
-                       : settings.seconds     ? 0
-                                              : autoDirectSpp(settings.mutationsPerPixel.value_or(kDefaultMutationsPerPixel));
+    const int target = fixedDirectSpp(settings);
     const double fraction = target > 0 ? double(sofar.spp) / target
                                        : std::min(1.0, sofar.seconds / (kDirectBudgetShare * settings.seconds.value_or(1.0)));
     const double rays = double(sofar.spp) * settings.width * settings.height;

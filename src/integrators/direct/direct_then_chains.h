@@ -1,6 +1,7 @@
 #pragma once
-// The Markov-chain integrators' render (pssmlt, mmlt, relt): the directly seen emission in a pass
-// apart first (direct_driver.h; none for mmlt or with --direct-emission-spp 0), then the chains,
+// The render of pssmlt, mmlt, relt, vcm and meb: the emission seen directly or through specular
+// surfaces only in a pass apart first (direct_driver.h; none for mmlt or with
+// --direct-emission-spp 0), then the main estimator (the chains, or vcm's and meb's iterations),
 // whose image it is added to. A render stopped during the pass writes the pass's image.
 #include <functional>
 

@@ -2,6 +2,7 @@
 // subpaths drawn by a visibility chain and a contribution chain coupled by replica exchange (src/meb).
 #include "integrators/meb/meb_integrator.h"
 
+#include "integrators/shared_options.h"
 #include "integrators/meb/meb_render.h"
 #include "integrators/meb/meb_settings.h"
 
@@ -31,6 +32,7 @@ void addMebOptions(CLI::App& cmd, IntegratorSettings& own) {
 
 void addMebSettingsJson(const RenderSettings& s, nlohmann::json& j) {
   const MebSettings& m = s.own.get<MebIntegratorSettings>().meb;
+  addDirectSettingsJson(s, j);
   j["meb_pairs"] = m.pairs;
   j["meb_initial_paths"] = m.initialPaths;
   j["meb_large_step"] = m.largeStepProbability;
@@ -44,9 +46,10 @@ const IntegratorEntry& mebIntegrator() {
   static const IntegratorEntry entry = [] {
     IntegratorEntry e;
     e.kind.name = "meb";
+    e.kind.directEmissionApart = true;
     e.kind.settingsJson = addMebSettingsJson;
     e.summary = "Metropolised bidirectional estimators: vcm with light subpaths from a visibility and a contribution chain";
-    e.sharedOptions = {"--spp"};
+    e.sharedOptions = {"--spp", "--direct-emission-spp"};
     e.makeSettings = makeSettingsOf<MebIntegratorSettings>;
     e.addOptions = addMebOptions;
     e.render = renderMeb;

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "integrators/meb/meb_settings.h"
+#include "integrators/direct/direct_then_chains.h"
 #include "integrators/passes/iteration_loop.h"
 
 namespace relt {
@@ -41,14 +42,13 @@ nlohmann::json chainStats(Job& job, const MebStats& mine) {
           {"non_finite_dropped", s.nonFinite}};
 }
 
-}  // namespace
 
-void renderMeb(RenderContext& c) {
+void renderMebIterations(RenderContext& c, const DirectEstimate& direct, Clock::time_point renderStart) {
   const RenderSettings& settings = c.settings;
   const MebSettings& own = settings.own.get<MebIntegratorSettings>().meb;
   MebRenderer meb(c.renderer.context(), own, settings.seed, settings.width, settings.height, settings.threads);
   Film film(settings.width, settings.height);
-  IterationLoop loop(c, "meb", film, [&](uint64_t i) { meb.render(i, film); });
+  IterationLoop loop(c, "meb", film, [&](uint64_t i) { meb.render(i, film); }, direct, renderStart);
   loop.run();
   const auto stats = [&] {
     const uint64_t last = loop.done() > 0 ? loop.done() - 1 : 0;
@@ -64,5 +64,9 @@ void renderMeb(RenderContext& c) {
   };
   finishIterations(c, loop, film, stats, closing);
 }
+
+}  // namespace
+
+void renderMeb(RenderContext& c) { renderDirectThenChains(c, renderMebIterations); }
 
 }  // namespace relt

@@ -2,6 +2,7 @@
 // MIS (src/vcm).
 #include "integrators/vcm/vcm_integrator.h"
 
+#include "integrators/shared_options.h"
 #include "integrators/vcm/vcm_render.h"
 #include "integrators/vcm/vcm_settings.h"
 
@@ -28,6 +29,7 @@ void addVcmOptions(CLI::App& cmd, IntegratorSettings& own) {
 
 void addVcmSettingsJson(const RenderSettings& s, nlohmann::json& j) {
   const VcmSettings& v = s.own.get<VcmIntegratorSettings>().vcm;
+  addDirectSettingsJson(s, j);
   j["vcm_mode"] = vcmModeName(v.mode);
   if (v.mode != VcmMode::Bpt) {
     j["vcm_radius"] = v.radius;
@@ -41,9 +43,10 @@ const IntegratorEntry& vcmIntegrator() {
   static const IntegratorEntry entry = [] {
     IntegratorEntry e;
     e.kind.name = "vcm";
+    e.kind.directEmissionApart = true;
     e.kind.settingsJson = addVcmSettingsJson;
     e.summary = "vertex connection and merging";
-    e.sharedOptions = {"--spp"};
+    e.sharedOptions = {"--spp", "--direct-emission-spp"};
     e.makeSettings = makeSettingsOf<VcmIntegratorSettings>;
     e.addOptions = addVcmOptions;
     e.render = renderVcm;

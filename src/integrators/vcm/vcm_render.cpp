@@ -3,17 +3,19 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "integrators/direct/direct_then_chains.h"
 #include "integrators/passes/iteration_loop.h"
 #include "integrators/vcm/vcm_settings.h"
 
 namespace relt {
+namespace {
 
-void renderVcm(RenderContext& c) {
+void renderVcmIterations(RenderContext& c, const DirectEstimate& direct, Clock::time_point renderStart) {
   const RenderSettings& settings = c.settings;
   const VcmSettings& own = settings.own.get<VcmIntegratorSettings>().vcm;
   VcmRenderer vcm(c.renderer.context(), own, settings.seed, settings.width, settings.height, settings.threads);
   Film film(settings.width, settings.height);
-  IterationLoop loop(c, "vcm", film, [&](uint64_t i) { vcm.render(i, film); });
+  IterationLoop loop(c, "vcm", film, [&](uint64_t i) { vcm.render(i, film); }, direct, renderStart);
   loop.run();
   const auto stats = [&] {
     const uint64_t last = loop.done() > 0 ? loop.done() - 1 : 0;
@@ -31,5 +33,9 @@ void renderVcm(RenderContext& c) {
   };
   finishIterations(c, loop, film, stats, closing);
 }
+
+}  // namespace
+
+void renderVcm(RenderContext& c) { renderDirectThenChains(c, renderVcmIterations); }
 
 }  // namespace relt

@@ -73,7 +73,7 @@ TEST(DirectPass, AGivenCountIsTakenAsItIs) {
   Film film(12, 10);
   LocalJob one;
   EXPECT_EQ(renderDirectPass(renderer, one, film).spp, 8);
-  EXPECT_EQ(renderer.context().settings.minDepth, 2) << "asked for: kept even with nothing in view";
+  EXPECT_EQ(renderer.context().settings.specularChainsApart, true) << "asked for: kept even with nothing in view";
 }
 
 TEST(DirectPass, AutoWithAFixedBudgetTakesAutoDirectSpp) {
@@ -83,19 +83,19 @@ TEST(DirectPass, AutoWithAFixedBudgetTakesAutoDirectSpp) {
   Film film(12, 10), expected(12, 10);
   LocalJob one;
   EXPECT_EQ(renderDirectPass(renderer, one, film).spp, autoDirectSpp(40));
-  EXPECT_EQ(renderer.context().settings.minDepth, 2);
+  EXPECT_EQ(renderer.context().settings.specularChainsApart, true);
   renderer.renderDirect(0, 1, expected, 0, uint32_t(autoDirectSpp(40)));
   EXPECT_EQ(film.data(), expected.data());
 }
 
 TEST(DirectPass, AutoWithNoEmitterInViewHandsThatEmissionBackToTheChains) {
   Renderer renderer(withoutLightInView(), small(kDirectSppAuto));
-  ASSERT_EQ(renderer.context().settings.minDepth, 2);
+  ASSERT_EQ(renderer.context().settings.specularChainsApart, true);
   Film film(12, 10);
   LocalJob one;
   const DirectPass pass = renderDirectPass(renderer, one, film);
   EXPECT_EQ(pass.spp, 0);
-  EXPECT_EQ(renderer.context().settings.minDepth, 1);
+  EXPECT_EQ(renderer.context().settings.specularChainsApart, false);
   EXPECT_FALSE(directEmissionApart(renderer.settings()));
   EXPECT_EQ(filmSum(film), 0.0);
 }
@@ -106,7 +106,7 @@ TEST(DirectPass, AutoOnAnotherRankSeeingTheEmitterKeepsThePass) {
   othersSeeIt.othersAdd = 1.0;
   Film film(12, 10);
   EXPECT_EQ(renderDirectPass(renderer, othersSeeIt, film).spp, autoDirectSpp(16));
-  EXPECT_EQ(renderer.context().settings.minDepth, 2);
+  EXPECT_EQ(renderer.context().settings.specularChainsApart, true);
 }
 
 TEST(DirectPass, AutoWithATimeBudgetDoublesWhileTheSlowestRankStaysWithinTheShare) {
@@ -202,7 +202,7 @@ TEST(DirectPass, AResumedPassEndsOnTheFilmOfOneThatNeverStopped) {
   EXPECT_EQ(pass.spp, 256);
   EXPECT_FALSE(pass.stopped);
   EXPECT_EQ(film.data(), expected.data());
-  EXPECT_EQ(resumed.context().settings.minDepth, 2) << "the chains still leave that emission to the pass";
+  EXPECT_EQ(resumed.context().settings.specularChainsApart, true) << "the chains still leave that emission to the pass";
 }
 
 // A timed pass stopped within a doubling (20 of 32 rays) first ends it, then doubles on the time
