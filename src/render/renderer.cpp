@@ -91,7 +91,6 @@ void Renderer::keepDirectEmissionInChains() {
 
 void Renderer::renderDirect(int firstRow, int rowStride, Film& film, uint32_t begin, uint32_t end, bool probe) {
   const uint64_t stream = probe ? kProbeStream : kDirectStream;
-  const PathContext& direct = *ctx_;
   // The rank's rows are dealt to its workers (the i-th to worker i mod T), which add into the one
   // film: a pixel's samples all land in its own row, so each pixel's sum is made by one worker in
   // the order one worker would make it, and the image does not depend on the workers. A sample
@@ -103,12 +102,12 @@ void Renderer::renderDirect(int firstRow, int rowStride, Film& film, uint32_t be
     PathSample sample;
     int i = 0;
     for (int row = firstRow; row < settings_.height; row += rowStride, ++i)
-      if (i % workers == w) dropped[size_t(w)] += renderDirectRow(direct, stream, row, film, begin, end, source, sample);
+      if (i % workers == w) dropped[size_t(w)] += renderDirectRow(stream, row, film, begin, end, source, sample);
   });
   for (uint64_t n : dropped) film.addDropped(n);
 }
 
-uint64_t Renderer::renderDirectRow(const PathContext& direct, uint64_t stream, int row, Film& film, uint32_t begin,
+uint64_t Renderer::renderDirectRow(uint64_t stream, int row, Film& film, uint32_t begin,
                                    uint32_t end, IndependentSource& source, PathSample& sample) const {
   // Positions from a (0,2)-sequence shifted per pixel: the error sits at the emitter's outline,
   // where a pixel is partly covered, and such points resolve a straight edge there far better
@@ -122,7 +121,7 @@ uint64_t Renderer::renderDirectRow(const PathContext& direct, uint64_t stream, i
       source.reset(hashKey(settings_.seed, stream, pixel, static_cast<uint64_t>(k)));
       const Vec2 offset = shiftedSobol02(k, sx, sy);
       sample.clear();
-      traceSpecularChain(direct, positionInPixel(x, row, offset), source, sample);
+      traceSpecularChain(*ctx_, positionInPixel(x, row, offset), source, sample);
       if (sample.finite())
         film.addSample(sample);
       else

@@ -42,7 +42,7 @@ class Renderer {
   // must not be part of its estimate. On the rank's worker threads; the film is the same for any
   // number of them.
   void renderDirect(int firstRow, int rowStride, Film& film, uint32_t begin, uint32_t end, bool probe = false);
-  // The direct pass found no emitter in view: the chains estimate those paths again.
+  // The direct pass saw none of that emission: the main estimator takes those paths again.
   // Only before any chain has stepped.
   void keepDirectEmissionInChains();
 
@@ -76,7 +76,7 @@ class Renderer {
   };
   std::vector<std::unique_ptr<RowWorker>> workers_;
   // renderDirect's samples of one row; returns how many were not finite (not added).
-  uint64_t renderDirectRow(const PathContext& direct, uint64_t stream, int row, Film& film, uint32_t begin, uint32_t end,
+  uint64_t renderDirectRow(uint64_t stream, int row, Film& film, uint32_t begin, uint32_t end,
                            IndependentSource& source, PathSample& sample) const;
   static constexpr uint64_t kDirectStream = 0xd12ec7;  // keeps renderDirect's streams apart
   static constexpr uint64_t kProbeStream = 0xd12ec8;   // and the probe's from those

@@ -1,7 +1,8 @@
 #pragma once
-// pssmlt, relt, vcm and meb: the emission seen directly or through specular surfaces only, rendered apart (row r on rank r mod P, every pixel on
-// its own streams, so the image does not depend on P) and reduced; render/direct_pass.h decides how
-// many rays, and whether at all. The pass is in every checkpoint: a resume never renders it again.
+// pssmlt, relt, vcm and meb: the emission seen directly or through specular surfaces only, rendered
+// apart (row r on rank r mod P, every pixel on its own streams, so the image does not depend on P)
+// and reduced; render/direct_pass.h decides how many rays, and whether at all. The pass is in every
+// checkpoint: a resume never renders it again.
 #include <functional>
 #include <optional>
 

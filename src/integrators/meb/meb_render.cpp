@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "integrators/meb/meb_settings.h"
 #include "integrators/direct/direct_then_chains.h"
+#include "integrators/meb/meb_settings.h"
 #include "integrators/passes/iteration_loop.h"
 
 namespace relt {
@@ -41,7 +41,6 @@ nlohmann::json chainStats(Job& job, const MebStats& mine) {
           {"merges", s.merges},
           {"non_finite_dropped", s.nonFinite}};
 }
-
 
 void renderMebIterations(RenderContext& c, const DirectEstimate& direct, Clock::time_point renderStart) {
   const RenderSettings& settings = c.settings;

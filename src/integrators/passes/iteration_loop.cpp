@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "integrators/output/render_outputs.h"
 #include "integrators/direct/direct_then_chains.h"
+#include "integrators/output/render_outputs.h"
 #include "mcmc/round_schedule.h"
 
 namespace relt {
@@ -14,7 +14,7 @@ namespace relt {
 IterationLoop::IterationLoop(RenderContext& c, const char* name, Film& film, std::function<void(uint64_t)> render,
                              const DirectEstimate& direct, Clock::time_point renderStart)
     : c_(c), name_(name), film_(film), render_(std::move(render)), direct_(direct), renderStart_(renderStart),
-      budget_(chainSettings(c.settings, direct).seconds) {
+      budgetSeconds_(chainSettings(c.settings, direct).seconds) {
   if (c.resumed) {
     c.resumed->restoreFilms(std::span<Film>(&film, 1));
     done_ = c.resumed->progress.at("iterations").get<uint64_t>();
@@ -39,11 +39,11 @@ void IterationLoop::run() {
   Job& job = c_.job;
   const RenderSettings& s = c_.settings;
   const uint64_t ranks = uint64_t(job.size());
-  const uint64_t budget = budget_ ? UINT64_MAX : uint64_t(s.spp.value_or(kDefaultSpp));
+  const uint64_t budget = budgetSeconds_ ? UINT64_MAX : uint64_t(s.spp.value_or(kDefaultSpp));
   double agreed = earlier_, lastRound = 0.0, lastPrint = 0.0, lastSnapshot = earlier_, lastCheckpoint = earlier_;
   bool first = true;
   while (done_ < budget) {
-    if (budget_ && !startAnotherPass(first ? 0 : 1, agreed, lastRound, *budget_)) break;
+    if (budgetSeconds_ && !startAnotherPass(first ? 0 : 1, agreed, lastRound, *budgetSeconds_)) break;
     first = false;
     const uint64_t i = done_ + uint64_t(job.rank());
     if (i < budget) render_(i);
@@ -51,7 +51,7 @@ void IterationLoop::run() {
     const JobAgreement a = job.agree(earlier_ + secondsSince(start_));
     lastRound = a.elapsed - agreed;
     agreed = a.elapsed;
-    const bool more = !a.stop && done_ < budget && !(budget_ && agreed + lastRound > *budget_);
+    const bool more = !a.stop && done_ < budget && !(budgetSeconds_ && agreed + lastRound > *budgetSeconds_);
     // A save request always writes (an image must exist before the kill); the final image is
     // written after the loop.
     if (a.save || snapshotDue(s.snapshotEvery, agreed, lastSnapshot, more)) {
@@ -71,7 +71,7 @@ void IterationLoop::printProgress(double agreed, uint64_t budget, double& lastPr
   if (!c_.job.isRoot() || agreed - lastPrint < 1.0) return;
   lastPrint = agreed;
   const RenderSettings& s = c_.settings;
-  const double fraction = budget_ ? agreed / *budget_ : double(done_) / double(budget);
+  const double fraction = budgetSeconds_ ? agreed / *budgetSeconds_ : double(done_) / double(budget);
   // An iteration is one camera sample (and one light subpath) per pixel.
   const double samples = double(done_) * double(s.width) * double(s.height);
   std::fprintf(stderr, ::isatty(STDERR_FILENO) ? "\r%s" : "%s\n",

@@ -49,7 +49,7 @@ class IterationLoop {
   std::function<void(uint64_t)> render_;
   const DirectEstimate& direct_;
   Clock::time_point renderStart_;
-  std::optional<double> budget_;  // seconds for the iterations (none: --spp)
+  std::optional<double> budgetSeconds_;  // for the iterations (none: --spp)
   uint64_t done_ = 0, resumedAt_ = 0;
   double earlier_ = 0.0;  // seconds of the render this one continues
   int snapshots_ = 0;
